@@ -1,0 +1,164 @@
+// noneuclid: command-line front end.
+//
+// Until the renderer lands, the program has one command, `accuracy`, which prints how close
+// the fixed-point lookup-table functions come to the std:: double functions (the same
+// measurement tests/accuracy asserts on). Running with no command prints that report too.
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "fixed/accuracy.hpp"
+#include "fixed/tables.hpp"
+
+namespace {
+
+constexpr const char* kVersion = "0.1.0";
+
+void print_help(std::FILE* out) {
+    std::fprintf(out,
+                 "usage: noneuclid [COMMAND] [OPTIONS]\n"
+                 "\n"
+                 "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin,\n"
+                 "Child & He (2019). The renderer is not built yet; today the program reports on\n"
+                 "its fixed-point lookup-table trigonometry core.\n"
+                 "\n"
+                 "commands:\n"
+                 "  accuracy          measure every fixed-point function against std:: double\n"
+                 "                    and print the table (default when no command is given);\n"
+                 "                    exit status 1 if any row misses its asserted bound\n"
+                 "\n"
+                 "options for accuracy:\n"
+                 "  --samples N       evenly spaced samples per row (default 262144)\n"
+                 "  --random N        seeded random samples per row (default 65536)\n"
+                 "  --seed S          seed for the random samples (default 20190101)\n"
+                 "\n"
+                 "  -h, --help        show this help\n"
+                 "  --version         show the version\n");
+}
+
+// Parses a non-negative integer option value; on failure prints one sentence and exits 2.
+unsigned long long parse_count(const char* option, const char* text, unsigned long long lo,
+                               unsigned long long hi) {
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long v = std::strtoull(text ? text : "", &end, 10);
+    if (!text || *text == '\0' || *text == '-' || *end != '\0' || errno != 0 || v < lo ||
+        v > hi) {
+        std::fprintf(stderr,
+                     "noneuclid: %s needs a whole number from %llu to %llu, not '%s'.\n",
+                     option, lo, hi, text ? text : "");
+        std::exit(2);
+    }
+    return v;
+}
+
+const char* format_arg(char* buf, std::size_t n, const noneuclid::fx::AccuracyRow& r,
+                       const double* arg) {
+    if (r.two_args)
+        std::snprintf(buf, n, "(%.6g, %.6g)", arg[0], arg[1]);
+    else
+        std::snprintf(buf, n, "%.9g", arg[0]);
+    return buf;
+}
+
+int run_accuracy(const noneuclid::fx::AccuracyOptions& options) {
+    using noneuclid::fx::AccuracyRow;
+    std::vector<AccuracyRow> rows(static_cast<std::size_t>(noneuclid::fx::accuracy_row_count()));
+    const int n = noneuclid::fx::measure_accuracy(options, rows.data(), static_cast<int>(rows.size()));
+
+    std::printf("noneuclid %s: fixed-point (Q16.16, binary angle) functions against std:: double\n",
+                kVersion);
+    std::printf("samples per row: %ld evenly spaced (+%ld log-spaced where marked ~) + %ld random "
+                "(seed %llu)\n",
+                options.dense, options.dense, options.random,
+                static_cast<unsigned long long>(options.seed));
+    std::printf("rows with a floor: relative error where |reference| >= floor, absolute below it;\n"
+                "other rows: absolute error everywhere. Errors in radians for angles.\n"
+                "asserted bound: what tests/accuracy holds; required: the ceiling asked for.\n\n");
+    std::printf("%-15s %-19s %8s  %-10s %-18s  %-10s %-18s %-5s  %-21s %-9s %s\n", "function",
+                "domain", "samples", "max abs", "at", "max rel", "at", "floor", "asserted bound",
+                "required", "ok");
+    bool all = true;
+    for (int i = 0; i < n; ++i) {
+        const AccuracyRow& r = rows[static_cast<std::size_t>(i)];
+        char a1[48], a2[48], rel[16], bound[40], req[16], floor_[24];
+        const bool has_rel = r.rel_floor > 0 || r.rel_bound > 0;
+        if (has_rel) {
+            std::snprintf(rel, sizeof rel, "%.2e", r.max_rel);
+            format_arg(a2, sizeof a2, r, r.arg_rel);
+            std::snprintf(floor_, sizeof floor_, "%g", r.rel_floor);
+        } else {
+            std::snprintf(rel, sizeof rel, "-");
+            std::snprintf(a2, sizeof a2, "-");
+            std::snprintf(floor_, sizeof floor_, "-");
+        }
+        if (r.abs_bound > 0 && r.rel_bound > 0)
+            std::snprintf(bound, sizeof bound, "abs %.1e, rel %.1e", r.abs_bound, r.rel_bound);
+        else if (r.abs_bound > 0)
+            std::snprintf(bound, sizeof bound, "abs %.1e", r.abs_bound);
+        else
+            std::snprintf(bound, sizeof bound, "rel %.1e", r.rel_bound);
+        if (r.required > 0)
+            std::snprintf(req, sizeof req, "%s %.0e", r.required_is_rel ? "rel" : "abs", r.required);
+        else
+            std::snprintf(req, sizeof req, "-");
+        char abs_[16];
+        if (r.abs_samples > 0) {
+            std::snprintf(abs_, sizeof abs_, "%.2e", r.max_abs);
+            format_arg(a1, sizeof a1, r, r.arg_abs);
+        } else {
+            std::snprintf(abs_, sizeof abs_, "-");
+            std::snprintf(a1, sizeof a1, "-");
+        }
+        std::printf("%-15s %-19s %8ld  %-10s %-18s  %-10s %-18s %-5s  %-21s %-9s %s\n",
+                    r.function, r.domain, r.samples, abs_, a1, rel, a2, floor_, bound, req,
+                    r.pass ? "yes" : "NO");
+        all = all && r.pass;
+    }
+    std::printf("\nlookup tables: %zu bytes (%.1f KiB) of read-only data, built at compile time\n",
+                noneuclid::fx::tables::table_bytes,
+                static_cast<double>(noneuclid::fx::tables::table_bytes) / 1024.0);
+    std::printf("%s\n", all ? "all rows within their asserted bounds"
+                            : "SOME ROWS MISS THEIR BOUNDS (marked NO)");
+    return all ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    noneuclid::fx::AccuracyOptions options;
+    int i = 1;
+    if (i < argc && std::strcmp(argv[i], "accuracy") == 0) ++i;
+    for (; i < argc; ++i) {
+        const char* a = argv[i];
+        auto value = [&](const char* name) -> const char* {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "noneuclid: %s needs a value; see 'noneuclid --help'.\n", name);
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (std::strcmp(a, "-h") == 0 || std::strcmp(a, "--help") == 0) {
+            print_help(stdout);
+            return 0;
+        } else if (std::strcmp(a, "--version") == 0) {
+            std::printf("noneuclid %s\n", kVersion);
+            return 0;
+        } else if (std::strcmp(a, "--samples") == 0) {
+            options.dense = static_cast<long>(parse_count(a, value(a), 2, 100000000));
+        } else if (std::strcmp(a, "--random") == 0) {
+            options.random = static_cast<long>(parse_count(a, value(a), 0, 100000000));
+        } else if (std::strcmp(a, "--seed") == 0) {
+            options.seed = parse_count(a, value(a), 0, ~0ull);
+        } else if (a[0] == '-') {
+            std::fprintf(stderr, "noneuclid: unknown option '%s'; see 'noneuclid --help'.\n", a);
+            return 2;
+        } else {
+            std::fprintf(stderr, "noneuclid: unknown command '%s'; see 'noneuclid --help'.\n", a);
+            return 2;
+        }
+    }
+    return run_accuracy(options);
+}

@@ -1,0 +1,68 @@
+// The lookup tables, computed by the compiler. `constexpr` on each definition forces the
+// computation to happen at compile time; `const` places the result in .rodata.
+#include "fixed/tables.hpp"
+
+#include "fixed/constexpr_math.hpp"
+
+namespace noneuclid::fx::tables {
+namespace {
+
+template <class T, std::size_t N, class F>
+constexpr std::array<T, N> build(F f) {
+    std::array<T, N> t{};
+    for (std::size_t i = 0; i < N; ++i) t[i] = static_cast<T>(cx::round_to_ll(f(static_cast<int>(i))));
+    return t;
+}
+
+constexpr double q30 = 1073741824.0;  // 2^30
+constexpr double q31 = 2147483648.0;  // 2^31
+
+}  // namespace
+
+constexpr std::array<int32_t, (1 << kSinBits) + 2> sin_q30 =
+    build<int32_t, (1 << kSinBits) + 2>([](int i) {
+        return cx::sin(2 * cx::pi * i / (1 << kSinBits)) * q30;
+    });
+
+constexpr std::array<uint32_t, (1 << kAtanBits) + 2> atan_units =
+    build<uint32_t, (1 << kAtanBits) + 2>([](int i) {
+        const int n = i > (1 << kAtanBits) ? (1 << kAtanBits) : i;  // pad repeats the end
+        return cx::atan(static_cast<double>(n) / (1 << kAtanBits)) * (4294967296.0 / (2 * cx::pi));
+    });
+
+constexpr std::array<int32_t, (1 << (kAsinBits - 1)) + 2> asin_q30 =
+    build<int32_t, (1 << (kAsinBits - 1)) + 2>([](int i) {
+        const double x = static_cast<double>(i) / (1 << kAsinBits);
+        return cx::asin(x > 0.5 ? 0.5 : x) * q30;
+    });
+
+constexpr std::array<uint32_t, 192 + 2> sqrt_q31 = build<uint32_t, 192 + 2>([](int i) {
+    const double m = (64.0 + (i > 192 ? 192 : i)) / 256.0;
+    return cx::sqrt(m) * q31;
+});
+
+constexpr std::array<uint32_t, 256> exp2_q30 = build<uint32_t, 256>([](int j) {
+    return cx::exp(cx::ln2 * j / 256.0) * q30;
+});
+
+constexpr std::array<uint32_t, (1 << kLog2Bits) + 2> log2_q31 =
+    build<uint32_t, (1 << kLog2Bits) + 2>([](int i) {
+        const int n = i > (1 << kLog2Bits) ? (1 << kLog2Bits) : i;
+        return cx::log2(1.0 + static_cast<double>(n) / (1 << kLog2Bits)) * q31;
+    });
+
+constexpr std::array<int32_t, (kSfCfRange * 2 << kSfStepBits) + 2> sf_q28 =
+    build<int32_t, (kSfCfRange * 2 << kSfStepBits) + 2>([](int i) {
+        return cx::Sf(-kSfCfRange + static_cast<double>(i) / (1 << kSfStepBits)) * (1 << 28);
+    });
+
+constexpr std::array<int32_t, (kSfCfRange * 2 << kCfStepBits) + 2> cf_q27 =
+    build<int32_t, (kSfCfRange * 2 << kCfStepBits) + 2>([](int i) {
+        return cx::Cf(-kSfCfRange + static_cast<double>(i) / (1 << kCfStepBits)) * (1 << 27);
+    });
+
+constexpr std::array<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBits - 1))) + 2>
+    asf_q30 = build<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBits - 1))) + 2>(
+        [](int i) { return cx::ASf(-kASfLow + static_cast<double>(i) / (1 << kASfStepBits)) * q30; });
+
+}  // namespace noneuclid::fx::tables
