@@ -1,0 +1,49 @@
+// The compile-time tables against std:: (which also checks constexpr_math.hpp), and their size.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fixed/tables.hpp"
+
+namespace t = noneuclid::fx::tables;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+template <class Table, class F>
+void expect_table(const Table& table, double scale, std::size_t used, F f, const char* name) {
+    for (std::size_t i = 0; i < used; ++i)
+        ASSERT_NEAR(static_cast<double>(table[i]) / scale, f(static_cast<double>(i)), 0.5 / scale + 1e-13)
+            << name << "[" << i << "]";
+}
+
+TEST(Tables, EntriesMatchStdToHalfAStep) {
+    expect_table(t::sin_q30, 0x1p30, 2049, [](double i) { return std::sin(2 * kPi * i / 2048); }, "sin");
+    expect_table(t::atan_units, 4294967296.0 / (2 * kPi), 513,
+                 [](double i) { return std::atan(i / 512); }, "atan");
+    expect_table(t::asin_q30, 0x1p30, 257, [](double i) { return std::asin(i / 512); }, "asin");
+    expect_table(t::sqrt_q31, 0x1p31, 193, [](double i) { return std::sqrt((64 + i) / 256); }, "sqrt");
+    expect_table(t::exp2_q30, 0x1p30, 256, [](double j) { return std::exp2(j / 256); }, "exp2");
+    expect_table(t::log2_q31, 0x1p31, 513, [](double i) { return std::log2(1 + i / 512); }, "log2");
+    expect_table(t::sf_q28, 0x1p28, 1281, [](double i) {
+        const double u = -10 + i / 64, s = std::sqrt(std::fabs(u));
+        return u == 0 ? 1.0 : (u > 0 ? std::sin(s) / s : std::sinh(s) / s);
+    }, "Sf");
+    expect_table(t::cf_q27, 0x1p27, 2561, [](double i) {
+        const double u = -10 + i / 128, s = std::sqrt(std::fabs(u));
+        return u >= 0 ? std::cos(s) : std::cosh(s);
+    }, "Cf");
+    expect_table(t::asf_q30, 0x1p30, 1153, [](double i) {
+        const double u = -4 + i / 256, s = std::sqrt(std::fabs(u));
+        return u == 0 ? 1.0 : (u > 0 ? std::asin(s) / s : std::asinh(s) / s);
+    }, "ASf");
+}
+
+TEST(Tables, FitTheMemoryBudget) {
+    EXPECT_LE(t::table_bytes, 64u * 1024u);
+    // What the README reports.
+    RecordProperty("table_bytes", static_cast<int>(t::table_bytes));
+}
+
+}  // namespace
