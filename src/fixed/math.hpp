@@ -116,12 +116,11 @@ constexpr int64_t mul_q32(int64_t x, uint32_t b) noexcept {
     return hi * static_cast<int64_t>(b) + static_cast<int64_t>((lo * b) >> 32);
 }
 
-// e^x for x in Q32, result Q32, saturating at INT64_MAX (x > ~21.4); 0 below x = -23.
-inline int64_t exp_q32(int64_t x) noexcept {
-    if (x > (int64_t{21} << 32)) return INT64_MAX;
-    if (x < -(int64_t{23} << 32)) return 0;
-    const int64_t y = x + mul_q32(x, static_cast<uint32_t>(kLog2eM1Q32));  // x log2 e, Q32
-    const int k = static_cast<int>(y >> 32);                                // floor
+// 2^y for y in Q32, result Q32, saturating at INT64_MAX (y >= 31); 0 for y < -33.
+inline int64_t exp2_q32(int64_t y) noexcept {
+    if (y >= (int64_t{31} << 32)) return INT64_MAX;
+    if (y < -(int64_t{33} << 32)) return 0;
+    const int k = static_cast<int>(y >> 32);  // floor
     const uint32_t f = static_cast<uint32_t>(y);
     const uint32_t j = f >> 24;
     const uint64_t r = f & 0xFFFFFFu;               // remainder < 2^-8, Q32
@@ -135,6 +134,20 @@ inline int64_t exp_q32(int64_t x) noexcept {
     }
     if (s >= 64) return 0;
     return static_cast<int64_t>((mant + (uint64_t{1} << (s - 1))) >> s);
+}
+
+// e^x for x in Q32, result Q32 (saturating, see exp2_q32).
+inline int64_t exp_q32(int64_t x) noexcept {
+    if (x > (int64_t{22} << 32)) return INT64_MAX;
+    if (x < -(int64_t{23} << 32)) return 0;
+    return exp2_q32(x + mul_q32(x, static_cast<uint32_t>(kLog2eM1Q32)));  // x log2 e
+}
+
+// e^x for x in Q16.16 (|raw| <= 2^31, so that -INT32_MIN can be passed), result Q32: one
+// product for x log2 e instead of the two halves exp_q32 needs.
+inline int64_t exp_q32_of_q16(int64_t raw) noexcept {
+    constexpr int64_t kLog2eQ30 = 1549082005;  // log2(e) * 2^30
+    return exp2_q32((raw * kLog2eQ30) >> 14);
 }
 
 // ln(v / 2^frac) for v > 0, result Q32.
@@ -244,7 +257,7 @@ inline fixed sqrt(fixed x) noexcept {
 }
 
 inline fixed exp(fixed x) noexcept {
-    return detail::q32_to_fixed(detail::exp_q32(int64_t{x.raw()} << 16));
+    return detail::q32_to_fixed(detail::exp_q32_of_q16(x.raw()));
 }
 // Natural logarithm; log(x <= 0) returns min() (-32768, "minus infinity").
 inline fixed log(fixed x) noexcept {
@@ -253,13 +266,13 @@ inline fixed log(fixed x) noexcept {
 }
 
 inline fixed cosh(fixed x) noexcept {
-    const int64_t e1 = detail::exp_q32(int64_t{x.raw()} << 16);
-    const int64_t e2 = detail::exp_q32(-(int64_t{x.raw()} << 16));
+    const int64_t e1 = detail::exp_q32_of_q16(x.raw());
+    const int64_t e2 = detail::exp_q32_of_q16(-int64_t{x.raw()});
     return detail::q32_to_fixed(e1 / 2 + e2 / 2 + (e1 & e2 & 1));
 }
 inline fixed sinh(fixed x) noexcept {
-    const int64_t e1 = detail::exp_q32(int64_t{x.raw()} << 16);
-    const int64_t e2 = detail::exp_q32(-(int64_t{x.raw()} << 16));
+    const int64_t e1 = detail::exp_q32_of_q16(x.raw());
+    const int64_t e2 = detail::exp_q32_of_q16(-int64_t{x.raw()});
     return detail::q32_to_fixed((e1 - e2) / 2);
 }
 inline fixed asinh(fixed x) noexcept {

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Instructions per call on ARM for each fixed-point function against std:: double and float,
+# counted under qemu-user by ../shared/tools/arm-insncount (repeatable, unlike times).
+#
+#   tests/bench/arm-insncount.sh            # aarch64 (Cortex-A53 tuning), the README's table
+#   tests/bench/arm-insncount.sh armhf      # 32-bit ARMv7 build
+#
+# Needs crossbuild-essential-arm64 / -armhf and qemu-user (installed here if missing).
+# Per call = (count with N calls - count with 0 calls) / N, minus the loop's own cost
+# (insn_probe nop: load an input, accumulate, count), which is printed too.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+target=${1:-aarch64}
+case $target in
+    aarch64) arch=aarch64; pkg=crossbuild-essential-arm64 ;;
+    armhf) arch=arm; pkg=crossbuild-essential-armhf ;;
+    *) echo "arm-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
+esac
+counter=${ARM_INSNCOUNT:-../shared/tools/arm-insncount/arm-insncount}
+if [ ! -x "$counter" ]; then
+    echo "arm-insncount.sh: $counter not found: check out ../shared beside this repository or set ARM_INSNCOUNT." >&2
+    exit 2
+fi
+. platform/debian/deps.sh
+noneuclid_deps g++ cmake make "$pkg" qemu-user gcc libgtest-dev
+cmake --preset "$target" >/dev/null
+cmake --build --preset "$target" --target insn_probe -j "$(nproc)" >/dev/null
+probe=build/$target/insn_probe
+n=20000
+
+count() {  # count FUNCTION IMPL CALLS -> instructions
+    "$counter" "$arch" "$probe" "$1" "$2" "$3" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+}
+per_call() {  # per_call FUNCTION IMPL -> instructions per call, loop included (x100, integer)
+    local base full
+    base=$(count "$1" "$2" 0)
+    full=$(count "$1" "$2" "$n")
+    echo $(( (full - base) * 100 / n ))
+}
+loop=$(per_call nop fixed)
+fmt() { printf '%d.%02d' $(( $1 / 100 )) $(( $1 % 100 )); }
+echo "instructions per call on $target (qemu-user, N=$n calls, loop of $(fmt "$loop") subtracted)"
+echo
+echo "| function | fixed | double | float | double/fixed | float/fixed |"
+echo "|---|---:|---:|---:|---:|---:|"
+for f in sin cos atan2 asin acos sqrt exp log sinh cosh asinh acosh Sf Cf ASf; do
+    fx=$(( $(per_call "$f" fixed) - loop ))
+    db=$(( $(per_call "$f" double) - loop ))
+    fl=$(( $(per_call "$f" float) - loop ))
+    echo "| $f | $(fmt "$fx") | $(fmt "$db") | $(fmt "$fl") | $(fmt $(( db * 100 / fx ))) | $(fmt $(( fl * 100 / fx ))) |"
+done
