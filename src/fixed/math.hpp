@@ -54,12 +54,63 @@ constexpr fixed q32_to_fixed(int64_t v) noexcept {
     return fixed::from_raw(saturate32(round_shift(v, 16)));
 }
 
-// n / d rounded to nearest, d > 0.
-constexpr int64_t div_round(int64_t n, int64_t d) noexcept {
-    return n >= 0 ? (n + d / 2) / d : -((-n + d / 2) / d);
+// Division. 64-bit targets (aarch64, x86-64) have a 64-bit divide instruction and use it.
+// 32-bit ARM has none (gcc calls __aeabi_uldivmod, ~400 instructions), so there every
+// division goes through a reciprocal: a table seed (18 bits) and one Newton step, all in
+// 32x32->64 products. isqrt64 and div_round are exact either way, so both paths give the same
+// results; the template parameter lets the tests run the portable path on any machine. (On
+// 32-bit targets atan2's tangent comes within a few units of 2^-32 instead: 1e-9 rad.)
+inline constexpr bool kNativeDivide64 = sizeof(void*) >= 8;
+
+// 2^62 / d for d in [2^31, 2^32): result in (2^30, 2^31], relative error < 2^-30.
+inline uint32_t recip_q62(uint32_t d) noexcept {
+    const uint32_t i = (d >> 23) & 255u;  // d / 2^31 = 1 + (i + f) / 256
+    const uint32_t f = (d >> 7) & 0xFFFFu;
+    const uint32_t t0 = tables::recip_q31[i], t1 = tables::recip_q31[i + 1];
+    uint32_t r = t0 - static_cast<uint32_t>((uint64_t{t0 - t1} * f) >> 16);
+    // Newton: r += r * (2^62 - d r) / 2^62. |e| < 2^46, so e >> 24 keeps the product < 2^53.
+    const int64_t e = static_cast<int64_t>((uint64_t{1} << 62) - uint64_t{d} * r);
+    r = static_cast<uint32_t>(int64_t{r} + ((int64_t{r} * (e >> 24)) >> 38));
+    return r;
 }
 
-// floor(sqrt(v)) for any 64-bit v: table seed (18 bits), one Newton step, exact fix-up.
+// n / d for d > 0, to within a few units (relative error < 2^-29): n * (2^62/d') >> ...
+template <bool Native = kNativeDivide64>
+inline uint64_t udiv_approx(uint64_t n, uint32_t d) noexcept {
+    if constexpr (Native) return n / d;
+    const int sh = std::countl_zero(d);
+    const uint64_t r = recip_q62(d << sh);  // ~ 2^(62 + sh) / d
+    const uint64_t nr = (n >> 32) * r + (((n & 0xFFFFFFFFu) * r) >> 32);  // (n r) / 2^32
+    return sh <= 30 ? nr >> (30 - sh) : nr << (sh - 30);
+}
+
+// n / d rounded to nearest (ties away from zero) for d > 0, exact; |n| < 2^62.
+template <bool Native = kNativeDivide64>
+inline int64_t div_round(int64_t n, uint32_t d) noexcept {
+    const uint64_t a = n < 0 ? 0u - static_cast<uint64_t>(n) : static_cast<uint64_t>(n);
+    if constexpr (Native) {
+        const uint64_t q = a / d + (2 * (a % d) >= d);
+        return n < 0 ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+    }
+    uint64_t q = udiv_approx<false>(a, d);
+    // One refinement on the remainder (error now a few units however large the quotient),
+    // then at most a few exact steps to the floor.
+    const int64_t rem = static_cast<int64_t>(a - q * d);
+    if (rem >= 0)
+        q += udiv_approx<false>(static_cast<uint64_t>(rem), d);
+    else {
+        const uint64_t down = udiv_approx<false>(static_cast<uint64_t>(-rem), d) + 1;
+        q = down > q ? 0 : q - down;
+    }
+    while (q > 0 && q * d > a) --q;  // now floor or below
+    while (a - q * d >= d) ++q;      // now the floor
+    if (2 * (a - q * d) >= d) ++q;   // round
+    return n < 0 ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+}
+
+// floor(sqrt(v)) for any 64-bit v: table seed (18 bits), one Newton step taken on the small
+// remainder (so the reciprocal's own error barely matters), exact fix-up.
+template <bool Native = kNativeDivide64>
 inline uint32_t isqrt64(uint64_t v) noexcept {
     if (v == 0) return 0;
     const int sh = std::countl_zero(v) & ~1;
@@ -67,9 +118,16 @@ inline uint32_t isqrt64(uint64_t v) noexcept {
     const uint32_t i = static_cast<uint32_t>(m >> 56) - 64;
     const uint64_t f = (m >> 24) & 0xFFFFFFFFu;
     const uint32_t t0 = tables::sqrt_q31[i], t1 = tables::sqrt_q31[i + 1];
-    uint64_t r = (uint64_t{t0} + (((uint64_t{t1} - t0) * f) >> 32)) << 1;
+    uint64_t r = (uint64_t{t0} + (((uint64_t{t1} - t0) * f) >> 32)) << 1;  // in [2^31, 2^32]
     if (r > 0xFFFFFFFFu) r = 0xFFFFFFFFu;
-    r = (r + m / r) >> 1;
+    if constexpr (Native) {
+        r = (r + m / r) >> 1;  // Newton; from above, so never below the floor
+    } else {
+        // r += (m - r^2) / (2 r): |m - r^2| < 2^48, (m - r^2) / 2^17 fits 31 bits.
+        const int64_t e = static_cast<int64_t>(m - r * r);
+        const int64_t inv = recip_q62(static_cast<uint32_t>(r));  // 2^62 / r
+        r = static_cast<uint64_t>(static_cast<int64_t>(r) + (((e >> 17) * inv) >> 46));
+    }
     if (r > 0xFFFFFFFFu) r = 0xFFFFFFFFu;
     while (r * r > m) --r;
     while (r < 0xFFFFFFFFu && (r + 1) * (r + 1) <= m) ++r;
@@ -208,7 +266,15 @@ inline angle atan2_angle(int32_t y_raw, int32_t x_raw) noexcept {
     const uint32_t ay = y_raw < 0 ? 0u - static_cast<uint32_t>(y_raw) : static_cast<uint32_t>(y_raw);
     const bool steep = ay > ax;
     const uint32_t num = steep ? ax : ay, den = steep ? ay : ax;
-    const uint64_t t = (uint64_t{num} << 32) / den;  // tan of the octant angle, Q32, <= 1
+    // tan of the octant angle, num / den in Q32 (<= 1; on 32-bit targets, through the
+    // reciprocal of den normalised to [2^31, 2^32), within a few units of 2^-32).
+    uint64_t t;
+    if constexpr (detail::kNativeDivide64) {
+        t = (uint64_t{num} << 32) / den;
+    } else {
+        const int sh = std::countl_zero(den);
+        t = (uint64_t{num << sh} * detail::recip_q62(den << sh)) >> 30;
+    }
     constexpr int shift = 32 - tables::kAtanBits;
     const uint32_t i = static_cast<uint32_t>(t >> shift);
     const uint64_t f = t & ((uint64_t{1} << shift) - 1);
@@ -308,14 +374,14 @@ inline fixed Sf(fixed u) noexcept {
     if (r > 0) {  // sin(s)/s with s = sqrt(u) in Q24
         const uint64_t s = detail::isqrt64(static_cast<uint64_t>(r) << 32);
         const int64_t sn = detail::sin_q30(detail::radians_to_units(s, 24));
-        return fixed::from_raw(static_cast<int32_t>(detail::div_round(sn << 10, static_cast<int64_t>(s))));
+        return fixed::from_raw(static_cast<int32_t>(detail::div_round(sn << 10, static_cast<uint32_t>(s))));
     }
     if (r <= detail::kHyperbolicSaturate) return fixed::max();
     const detail::hyperbolic_parts e = detail::hyperbolic_of_root(r);  // sinh(s)/s
     const int64_t sh = e.plus / 2 - e.minus / 2;                         // Q32
     if (sh >= (int64_t{1} << 52)) return fixed::max();                   // > 2^20 / 22.7
     return fixed::from_raw(detail::saturate32(
-        detail::div_round(sh << 11, static_cast<int64_t>(e.s_q27))));
+        detail::div_round(sh << 11, static_cast<uint32_t>(e.s_q27))));
 }
 
 inline fixed Cf(fixed u) noexcept {
@@ -354,14 +420,14 @@ inline fixed ASf(fixed u) noexcept {
     if (r > 0) {  // asin(s)/s, s = sqrt(u) in Q32 (u < 1 so u * 2^64 fits)
         const uint64_t s = detail::isqrt64(static_cast<uint64_t>(r) << 48);
         const int64_t as = detail::asin_q30(s);
-        return fixed::from_raw(static_cast<int32_t>(detail::div_round(as << 18, static_cast<int64_t>(s))));
+        return fixed::from_raw(static_cast<int32_t>(detail::div_round(as << 18, static_cast<uint32_t>(s))));
     }
     // asinh(s)/s, s = sqrt(-u) in Q24; sqrt(s^2 + 1) = sqrt(1 - u).
     const uint64_t v = static_cast<uint64_t>(-int64_t{r});
     const uint64_t s = detail::isqrt64(v << 32);
     const uint64_t h = detail::isqrt64((v + 65536) << 32);
     const int64_t ash = detail::ln_q32(s + h, 24);  // Q32
-    return fixed::from_raw(static_cast<int32_t>(detail::div_round(ash << 8, static_cast<int64_t>(s))));
+    return fixed::from_raw(static_cast<int32_t>(detail::div_round(ash << 8, static_cast<uint32_t>(s))));
 }
 
 }  // namespace noneuclid::fx

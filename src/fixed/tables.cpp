@@ -41,6 +41,10 @@ constexpr std::array<uint32_t, 192 + 2> sqrt_q31 = build<uint32_t, 192 + 2>([](i
     return cx::sqrt(m) * q31;
 });
 
+constexpr std::array<uint32_t, 256 + 2> recip_q31 = build<uint32_t, 256 + 2>([](int i) {
+    return q31 / (1.0 + (i > 256 ? 256 : i) / 256.0);
+});
+
 constexpr std::array<uint32_t, 256> exp2_q30 = build<uint32_t, 256>([](int j) {
     return cx::exp(cx::ln2 * j / 256.0) * q30;
 });

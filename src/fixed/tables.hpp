@@ -31,6 +31,10 @@ extern const std::array<int32_t, (1 << (kAsinBits - 1)) + 2> asin_q30;
 // Newton step; relative error of the seed <= 4.3e-6.
 extern const std::array<uint32_t, 192 + 2> sqrt_q31;
 
+// 1 / (1 + i / 256), i in [0, 256] (+1 pad), Q1.31: seeds the reciprocal that replaces
+// division (32-bit ARM has no 64-bit divide). Seed error <= 3.8e-6, 2^-30 after Newton.
+extern const std::array<uint32_t, 256 + 2> recip_q31;
+
 // 2^(j / 256), j in [0, 256), Q2.30. A quadratic in the remainder finishes exp.
 extern const std::array<uint32_t, 256> exp2_q30;
 
@@ -56,7 +60,7 @@ extern const std::array<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBit
 // Total bytes of all tables.
 inline constexpr std::size_t table_bytes =
     sizeof(sin_q30) + sizeof(atan_units) + sizeof(asin_q30) + sizeof(sqrt_q31) +
-    sizeof(exp2_q30) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30);
+    sizeof(exp2_q30) + sizeof(recip_q31) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30);
 static_assert(table_bytes <= 64 * 1024, "lookup tables must fit in 64 KiB");
 
 }  // namespace noneuclid::fx::tables

@@ -143,6 +143,51 @@ TEST(Functions, CurvatureFunctionsAreContinuousAtTableEdges) {
     }
 }
 
+// The integer kernels: exact floor square root and rounded division, checked against exact
+// integer arithmetic (no floating point in the reference).
+// Both the divide-instruction path and the reciprocal path (the one 32-bit ARM uses), here.
+template <bool Native>
+void check_isqrt() {
+    uint64_t x = 0x243F6A8885A308D3ull;  // a fixed pseudo-random walk over all magnitudes
+    for (int k = 0; k < 200000; ++k) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        const uint64_t v = x >> (k % 64);
+        const uint64_t r = detail::isqrt64<Native>(v);
+        ASSERT_LE(r * r, v) << v;
+        ASSERT_TRUE(r == 0xFFFFFFFFu || (r + 1) * (r + 1) > v) << v;
+    }
+    EXPECT_EQ(detail::isqrt64<Native>(~0ull), 0xFFFFFFFFu);
+    EXPECT_EQ(detail::isqrt64<Native>(1ull << 62), 1u << 31);
+    EXPECT_EQ(detail::isqrt64<Native>((1ull << 62) - 1), (1u << 31) - 1);
+}
+TEST(Kernels, IntegerSquareRootIsExactFloor) {
+    check_isqrt<true>();
+    check_isqrt<false>();
+}
+
+template <bool Native>
+void check_division() {
+    uint64_t x = 0x13198A2E03707344ull;
+    for (int k = 0; k < 200000; ++k) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        const uint32_t den = static_cast<uint32_t>(x >> (32 + k % 32)) | 1u;
+        const int64_t num = static_cast<int64_t>(x >> (2 + k % 61)) * (k % 2 ? -1 : 1);
+        const uint64_t a = num < 0 ? 0u - static_cast<uint64_t>(num) : static_cast<uint64_t>(num);
+        uint64_t q = a / den;
+        if (2 * (a % den) >= den) ++q;  // exact reference: round half away from zero
+        ASSERT_EQ(detail::div_round<Native>(num, den), num < 0 ? -static_cast<int64_t>(q) : static_cast<int64_t>(q))
+            << num << " / " << den;
+    }
+}
+TEST(Kernels, DivisionRoundsExactlyOnBothPaths) {
+    check_division<true>();
+    check_division<false>();
+}
+
 // Every function over a stride through all 2^32 raw values: under the sanitizer preset this
 // proves there is no undefined behaviour anywhere (overflow, shifts, out-of-bounds reads).
 TEST(Functions, WholeRawRangeIsDefined) {

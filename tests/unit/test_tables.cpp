@@ -24,6 +24,7 @@ TEST(Tables, EntriesMatchStdToHalfAStep) {
                  [](double i) { return std::atan(i / 512); }, "atan");
     expect_table(t::asin_q30, 0x1p30, 257, [](double i) { return std::asin(i / 512); }, "asin");
     expect_table(t::sqrt_q31, 0x1p31, 193, [](double i) { return std::sqrt((64 + i) / 256); }, "sqrt");
+    expect_table(t::recip_q31, 0x1p31, 257, [](double i) { return 1 / (1 + i / 256); }, "recip");
     expect_table(t::exp2_q30, 0x1p30, 256, [](double j) { return std::exp2(j / 256); }, "exp2");
     expect_table(t::log2_q31, 0x1p31, 513, [](double i) { return std::log2(1 + i / 512); }, "log2");
     expect_table(t::sf_q28, 0x1p28, 1281, [](double i) {
