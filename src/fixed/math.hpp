@@ -30,6 +30,7 @@
 // (the figures above are rounded up from the accuracy report; the tests hold them.)
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstdint>
 
@@ -165,6 +166,18 @@ inline int32_t asin_q30(uint64_t x_q32) noexcept {
     // asin x = pi/2 - 2 asin(sqrt((1 - x)/2)); sqrt of ((1-x) * 2^31) is the Q32 root.
     const uint64_t s = isqrt64(((uint64_t{1} << 32) - x_q32) << 31);
     return static_cast<int32_t>(kHalfPiQ30 - 2 * int64_t{asin_small_q30(s)});
+}
+
+// Linear interpolation in a table of Q(Frac) values at u = lo + i / 2^StepBits, for a
+// Q16.16 argument u_raw in [lo, lo + (N - 2) / 2^StepBits]; the result is rounded to Q16.16.
+template <int StepBits, int Frac, std::size_t N>
+inline fixed lerp_table(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
+    constexpr int shift = 16 - StepBits;
+    const uint32_t off = static_cast<uint32_t>(u_raw - lo_raw);
+    const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
+    const int32_t t0 = t[i], t1 = t[i + 1];
+    return fixed::from_raw(static_cast<int32_t>(
+        round_shift(t0 + ((int64_t{t1 - t0} * f) >> shift), Frac - 16)));
 }
 
 // Signed x * b / 2^32 for an unsigned 32-bit b, without a 128-bit product.
@@ -363,14 +376,8 @@ inline fixed acosh(fixed x) noexcept {
 inline fixed Sf(fixed u) noexcept {
     using namespace tables;
     const int32_t r = u.raw();
-    if (r >= -(kSfCfRange << 16) && r <= (kSfCfRange << 16)) {
-        constexpr int shift = 16 - kSfStepBits;
-        const uint32_t off = static_cast<uint32_t>(r + (kSfCfRange << 16));
-        const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
-        const int32_t t0 = sf_q28[i], t1 = sf_q28[i + 1];
-        return fixed::from_raw(static_cast<int32_t>(
-            detail::round_shift(t0 + ((int64_t{t1 - t0} * f) >> shift), 12)));
-    }
+    if (r >= -(kSfCfRange << 16) && r <= (kSfCfRange << 16))
+        return detail::lerp_table<kSfStepBits, 28>(sf_q28, r, -(kSfCfRange << 16));
     if (r > 0) {  // sin(s)/s with s = sqrt(u) in Q24
         const uint64_t s = detail::isqrt64(static_cast<uint64_t>(r) << 32);
         const int64_t sn = detail::sin_q30(detail::radians_to_units(s, 24));
@@ -387,14 +394,8 @@ inline fixed Sf(fixed u) noexcept {
 inline fixed Cf(fixed u) noexcept {
     using namespace tables;
     const int32_t r = u.raw();
-    if (r >= -(kSfCfRange << 16) && r <= (kSfCfRange << 16)) {
-        constexpr int shift = 16 - kCfStepBits;
-        const uint32_t off = static_cast<uint32_t>(r + (kSfCfRange << 16));
-        const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
-        const int32_t t0 = cf_q27[i], t1 = cf_q27[i + 1];
-        return fixed::from_raw(static_cast<int32_t>(
-            detail::round_shift(t0 + ((int64_t{t1 - t0} * f) >> shift), 11)));
-    }
+    if (r >= -(kSfCfRange << 16) && r <= (kSfCfRange << 16))
+        return detail::lerp_table<kCfStepBits, 27>(cf_q27, r, -(kSfCfRange << 16));
     if (r > 0) {  // cos(sqrt u)
         const uint64_t s = detail::isqrt64(static_cast<uint64_t>(r) << 32);
         const int32_t c = detail::sin_q30(detail::radians_to_units(s, 24) + angle::quarter_turn);
@@ -409,14 +410,8 @@ inline fixed ASf(fixed u) noexcept {
     using namespace tables;
     const int32_t r = u.raw();
     if (r >= 65536) return fixed::from_raw(static_cast<int32_t>(detail::round_shift(detail::kHalfPiQ30, 14)));
-    if (r >= -(kASfLow << 16) && r <= (1 << 15)) {
-        constexpr int shift = 16 - kASfStepBits;
-        const uint32_t off = static_cast<uint32_t>(r + (kASfLow << 16));
-        const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
-        const int32_t t0 = asf_q30[i], t1 = asf_q30[i + 1];
-        return fixed::from_raw(static_cast<int32_t>(
-            detail::round_shift(t0 + ((int64_t{t1 - t0} * f) >> shift), 14)));
-    }
+    if (r >= -(kASfLow << 16) && r <= (1 << 15))
+        return detail::lerp_table<kASfStepBits, 30>(asf_q30, r, -(kASfLow << 16));
     if (r > 0) {  // asin(s)/s, s = sqrt(u) in Q32 (u < 1 so u * 2^64 fits)
         const uint64_t s = detail::isqrt64(static_cast<uint64_t>(r) << 48);
         const int64_t as = detail::asin_q30(s);

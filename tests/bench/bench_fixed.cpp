@@ -18,45 +18,30 @@ namespace nb = noneuclid::bench;
 
 namespace {
 
-template <int I>
-void bm_fixed(benchmark::State& st) {
+enum class Impl { fixed, dbl, flt };
+
+// One call per iteration of implementation M of function I, on the shared 1024 inputs.
+template <int I, Impl M>
+void bm(benchmark::State& st) {
     static nb::Inputs in;
     nb::make_inputs(nb::kFunctions[I], in);
-    constexpr auto f = nb::kFunctions[I].fixed_fn;
     unsigned i = 0;
     for (auto _ : st) {
-        benchmark::DoNotOptimize(f(in.fixed_raw[i], in.fixed_raw2[i]));
-        i = (i + 1) & (nb::kInputs - 1);
-    }
-}
-template <int I>
-void bm_double(benchmark::State& st) {
-    static nb::Inputs in;
-    nb::make_inputs(nb::kFunctions[I], in);
-    constexpr auto f = nb::kFunctions[I].double_fn;
-    unsigned i = 0;
-    for (auto _ : st) {
-        benchmark::DoNotOptimize(f(in.d[i], in.d2[i]));
-        i = (i + 1) & (nb::kInputs - 1);
-    }
-}
-template <int I>
-void bm_float(benchmark::State& st) {
-    static nb::Inputs in;
-    nb::make_inputs(nb::kFunctions[I], in);
-    constexpr auto f = nb::kFunctions[I].float_fn;
-    unsigned i = 0;
-    for (auto _ : st) {
-        benchmark::DoNotOptimize(f(in.f[i], in.f2[i]));
+        if constexpr (M == Impl::fixed)
+            benchmark::DoNotOptimize(nb::kFunctions[I].fixed_fn(in.fixed_raw[i], in.fixed_raw2[i]));
+        else if constexpr (M == Impl::dbl)
+            benchmark::DoNotOptimize(nb::kFunctions[I].double_fn(in.d[i], in.d2[i]));
+        else
+            benchmark::DoNotOptimize(nb::kFunctions[I].float_fn(in.f[i], in.f2[i]));
         i = (i + 1) & (nb::kInputs - 1);
     }
 }
 
 template <int... I>
 void register_all(std::integer_sequence<int, I...>) {
-    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/fixed").c_str(), bm_fixed<I>), ...);
-    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/double").c_str(), bm_double<I>), ...);
-    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/float").c_str(), bm_float<I>), ...);
+    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/fixed").c_str(), bm<I, Impl::fixed>), ...);
+    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/double").c_str(), bm<I, Impl::dbl>), ...);
+    (benchmark::RegisterBenchmark((std::string(nb::kFunctions[I].name) + "/float").c_str(), bm<I, Impl::flt>), ...);
 }
 
 // Prints what the console reporter prints, and remembers ns/call for the summary.
