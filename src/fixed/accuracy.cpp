@@ -27,6 +27,12 @@ double ref_ASf(double u) {
 }
 
 // ---- the fixed-point functions, seen from double ----------------------------------------
+double ref_ATf(double u) {
+    if (std::fabs(u) < 1e-4) return 1 - u / 3 + u * u / 5;
+    const double s = std::sqrt(std::fabs(u));
+    return u > 0 ? std::atan(s) / s : std::atanh(s) / s;
+}
+
 double q_fixed(double x) { return fixed(x).to_double(); }
 double q_angle(double x) { return angle::from_radians(x).to_radians_double(); }
 template <fixed (*F)(fixed)>
@@ -105,6 +111,11 @@ const Spec kSpecs[] = {
      false},
     {"ASf", "[-32767, 1] ~", -32767, 1, true, q_fixed, via_fixed<ASf>, ref_ASf, 0, 9e-6, 0, 0,
      false},
+    // ATf(K t^2) for t = T_K(r/2): u = -tanh^2(r/2) >= -0.8437 for r <= pi at K = -1.
+    {"ATf", "[-0.8437, 1] ~", -0.8437, 1, true, q_fixed, via_fixed<ATf>, ref_ATf, 0, 9e-6, 0, 2e-5,
+     false},
+    {"ATf", "[-0.999, 1000] ~", -0.999, 1000, true, q_fixed, via_fixed<ATf>, ref_ATf, 1, 1e-5,
+     1e-5, 0, false},
 };
 constexpr int kSpecCount = sizeof(kSpecs) / sizeof(kSpecs[0]);
 constexpr int kAtan2Rows = 2;

@@ -133,6 +133,25 @@ constexpr double ASf(double u) {
     return asinh(sqrt(-u)) / sqrt(-u);
 }
 
+// atanh for 0 <= x < 1.
+constexpr double atanh(double x) {
+    if (x < 0.125) {
+        double term = x, sum = 0;
+        for (int n = 0; n < 30; ++n) {
+            sum += term / (2 * n + 1);
+            term *= x * x;
+        }
+        return sum;
+    }
+    return 0.5 * log((1 + x) / (1 - x));
+}
+// ATf(u) = atan(sqrt u)/sqrt u (u > 0), atanh(sqrt -u)/sqrt -u (-1 < u < 0), 1 at 0.
+constexpr double ATf(double u) {
+    if (abs(u) < 1e-3) return 1 - u / 3 + u * u / 5 - u * u * u / 7;
+    if (u > 0) return atan(sqrt(u)) / sqrt(u);
+    return atanh(sqrt(-u)) / sqrt(-u);
+}
+
 // Round to nearest integer (half away from zero) for table entries.
 constexpr long long round_to_ll(double v) {
     return static_cast<long long>(v >= 0 ? v + 0.5 : v - 0.5);

@@ -425,4 +425,35 @@ inline fixed ASf(fixed u) noexcept {
     return fixed::from_raw(static_cast<int32_t>(detail::div_round(ash << 8, static_cast<uint32_t>(s))));
 }
 
+// ATf(u) = atan(sqrt u)/sqrt u (u > 0), atanh(sqrt -u)/sqrt -u (-1 < u < 0), 1 at 0, so that
+// AT_K(t) = t ATf(K t^2) inverts the tangent T_K(x) = S_K(x)/C_K(x) for every K. The table
+// covers [-1/2, 1]; beyond it atan2 (u > 1) or two logarithms (u < -1/2). ATf(u <= -1) is
+// +infinity: it saturates to max().
+inline fixed ATf(fixed u) noexcept {
+    using namespace tables;
+    const int32_t r = u.raw();
+    if (r >= -(1 << 15) && r <= 65536)
+        return detail::lerp_table<kATfStepBits, 30>(atf_q30, r, -(1 << 15));
+    if (r <= -65536) return fixed::max();
+    if (r > 0) {  // atan(s)/s, s = sqrt(u) in Q16 (s > 1): angle of (s, 1) in Q32 radians
+        const fixed s = sqrt(u);
+        const angle a = atan2_angle(s.raw(), 65536);
+        const int64_t rad_q32 = static_cast<int64_t>((uint64_t{a.raw()} * 3373259426ull) >> 29);  // 2 pi 2^29
+        return fixed::from_raw(detail::saturate32(detail::div_round(rad_q32, static_cast<uint32_t>(s.raw()))));
+    }
+    // atanh(z)/z = (ln(1 + z) - ln(1 - z)) / (2 z), z = sqrt(-u) in Q32, 1/sqrt 2 < z < 1.
+    const uint64_t z = detail::isqrt64(static_cast<uint64_t>(-int64_t{r}) << 48);
+    const int64_t at2 = detail::ln_q32((uint64_t{1} << 32) + z, 32) - detail::ln_q32((uint64_t{1} << 32) - z, 32);
+    return fixed::from_raw(detail::saturate32(detail::div_round(at2 << 15, static_cast<uint32_t>(z))));
+}
+
+// sqrt(x^2 + y^2) without overflow in the squares (64-bit sum), correctly rounded.
+inline fixed hypot(fixed x, fixed y) noexcept {
+    const int64_t a = x.raw(), b = y.raw();
+    const uint64_t v = static_cast<uint64_t>(a * a) + static_cast<uint64_t>(b * b);  // < 2^63
+    uint64_t r = detail::isqrt64(v);
+    if (v - r * r > r) ++r;
+    return fixed::from_raw(detail::saturate32(static_cast<int64_t>(r)));
+}
+
 }  // namespace noneuclid::fx

@@ -69,4 +69,9 @@ constexpr std::array<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBits -
     asf_q30 = build<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBits - 1))) + 2>(
         [](int i) { return cx::ASf(-kASfLow + static_cast<double>(i) / (1 << kASfStepBits)) * q30; });
 
+constexpr std::array<int32_t, (3 << (kATfStepBits - 1)) + 2> atf_q30 =
+    build<int32_t, (3 << (kATfStepBits - 1)) + 2>([](int i) {
+        return cx::ATf(-0.5 + static_cast<double>(i) / (1 << kATfStepBits)) * q30;
+    });
+
 }  // namespace noneuclid::fx::tables

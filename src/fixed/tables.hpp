@@ -57,10 +57,17 @@ extern const std::array<int32_t, (kSfCfRange * 2 << kCfStepBits) + 2> cf_q27;
 extern const std::array<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBits - 1))) + 2>
     asf_q30;
 
+// ATf(u) = atan(sqrt u)/sqrt u (u > 0), atanh(sqrt -u)/sqrt -u (u < 0), 1 at 0, the inverse
+// of the tangent-half-angle T_K, on u = -1/2 + i/512, i in [0, 768] (+1 pad) = [-0.5, 1],
+// Q2.30. Error <= 8.3e-7.
+inline constexpr int kATfStepBits = 9;
+extern const std::array<int32_t, (3 << (kATfStepBits - 1)) + 2> atf_q30;
+
 // Total bytes of all tables.
 inline constexpr std::size_t table_bytes =
     sizeof(sin_q30) + sizeof(atan_units) + sizeof(asin_q30) + sizeof(sqrt_q31) +
-    sizeof(exp2_q30) + sizeof(recip_q31) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30);
+    sizeof(exp2_q30) + sizeof(recip_q31) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30) +
+    sizeof(atf_q30);
 static_assert(table_bytes <= 64 * 1024, "lookup tables must fit in 64 KiB");
 
 }  // namespace noneuclid::fx::tables

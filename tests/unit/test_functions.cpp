@@ -128,12 +128,25 @@ TEST(Functions, CurvatureFunctionsAtSpecialPoints) {
     EXPECT_NEAR(d(Cf(fixed::max())), std::cos(std::sqrt(32768.0)), 2e-5);
 }
 
+TEST(Functions, ATfAndHypot) {
+    EXPECT_EQ(ATf(fixed(0)), fixed(1));
+    EXPECT_NEAR(d(ATf(fixed(1))), kPi / 4, kHalfStep);          // atan(1)/1
+    EXPECT_EQ(ATf(fixed(-1)), fixed::max());                    // atanh(1) diverges
+    EXPECT_EQ(ATf(fixed(-5)), fixed::max());
+    EXPECT_NEAR(d(ATf(fixed(30000))), std::atan(std::sqrt(30000.0)) / std::sqrt(30000.0), 2e-5);
+    EXPECT_EQ(hypot(fixed(3), fixed(4)), fixed(5));
+    EXPECT_NEAR(d(hypot(fixed(20000), fixed(20000))), 20000 * std::sqrt(2.0), kHalfStep);  // squares > 2^31
+    EXPECT_EQ(hypot(fixed(30000), fixed(30000)), fixed::max());  // saturates, no overflow
+    EXPECT_NEAR(d(hypot(fixed(300), fixed(-400))), 500, kHalfStep);
+    EXPECT_EQ(hypot(fixed::min(), fixed(0)), fixed::max());
+}
+
 // Where a table hands over to the formula beyond it, the value must not jump.
 TEST(Functions, CurvatureFunctionsAreContinuousAtTableEdges) {
     struct Edge {
         fixed (*f)(fixed);
         double u;
-    } edges[] = {{Sf, 10}, {Sf, -10}, {Cf, 10}, {Cf, -10}, {ASf, 0.5}, {ASf, -4}};
+    } edges[] = {{Sf, 10}, {Sf, -10}, {Cf, 10}, {Cf, -10}, {ASf, 0.5}, {ASf, -4}, {ATf, -0.5}, {ATf, 1}};
     for (const Edge& e : edges) {
         const int32_t r = fixed(e.u).raw();
         for (int k = -3; k < 3; ++k) {
@@ -194,7 +207,8 @@ TEST(Functions, WholeRawRangeIsDefined) {
     int64_t acc = 0;
     auto all = [&acc](fixed x) {
         for (fixed v : {sin(x), cos(x), asin(x), acos(x), sqrt(x), exp(x), log(x), sinh(x),
-                        cosh(x), asinh(x), acosh(x), Sf(x), Cf(x), ASf(x), atan2(x, fixed(1)),
+                        cosh(x), asinh(x), acosh(x), Sf(x), Cf(x), ASf(x), ATf(x), atan2(x, fixed(1)),
+                        hypot(x, x), hypot(x, fixed(-7)),
                         atan2(fixed(-3), x), atan2(x, x), atan2(x, -x)})
             acc += v.raw();
     };

@@ -39,6 +39,10 @@ TEST(Tables, EntriesMatchStdToHalfAStep) {
         const double u = -4 + i / 256, s = std::sqrt(std::fabs(u));
         return u == 0 ? 1.0 : (u > 0 ? std::asin(s) / s : std::asinh(s) / s);
     }, "ASf");
+    expect_table(t::atf_q30, 0x1p30, 769, [](double i) {
+        const double u = -0.5 + i / 512, s = std::sqrt(std::fabs(u));
+        return u == 0 ? 1.0 : (u > 0 ? std::atan(s) / s : std::atanh(s) / s);
+    }, "ATf");
 }
 
 TEST(Tables, FitTheMemoryBudget) {
