@@ -170,14 +170,23 @@ inline int32_t asin_q30(uint64_t x_q32) noexcept {
 
 // Linear interpolation in a table of Q(Frac) values at u = lo + i / 2^StepBits, for a
 // Q16.16 argument u_raw in [lo, lo + (N - 2) / 2^StepBits]; the result is rounded to Q16.16.
-template <int StepBits, int Frac, std::size_t N>
-inline fixed lerp_table(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
+// lerp_table_raw gives the interpolated value in the table's own Q(Frac), unrounded.
+template <int StepBits, std::size_t N>
+inline int64_t lerp_table_raw(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
     constexpr int shift = 16 - StepBits;
     const uint32_t off = static_cast<uint32_t>(u_raw - lo_raw);
     const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
     const int32_t t0 = t[i], t1 = t[i + 1];
-    return fixed::from_raw(static_cast<int32_t>(
-        round_shift(t0 + ((int64_t{t1 - t0} * f) >> shift), Frac - 16)));
+    return t0 + ((int64_t{t1 - t0} * f) >> shift);
+}
+template <int StepBits, int Frac, std::size_t N>
+inline fixed lerp_table(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
+    return fixed::from_raw(static_cast<int32_t>(round_shift(lerp_table_raw<StepBits>(t, u_raw, lo_raw), Frac - 16)));
+}
+// x times a table value, rounded once: x (Q16) * value (Q(Frac)) -> Q16.
+template <int Frac>
+inline fixed times_table_value(fixed x, int64_t value) noexcept {
+    return fixed::from_raw(saturate32(round_shift(int64_t{x.raw()} * value, Frac)));
 }
 
 // Signed x * b / 2^32 for an unsigned 32-bit b, without a 128-bit product.
@@ -445,6 +454,42 @@ inline fixed ATf(fixed u) noexcept {
     const uint64_t z = detail::isqrt64(static_cast<uint64_t>(-int64_t{r}) << 48);
     const int64_t at2 = detail::ln_q32((uint64_t{1} << 32) + z, 32) - detail::ln_q32((uint64_t{1} << 32) - z, 32);
     return fixed::from_raw(detail::saturate32(detail::div_round(at2 << 15, static_cast<uint32_t>(z))));
+}
+
+// a b + c d with a single rounding (the products are summed in 64 bits, like a DSP's
+// multiply-accumulate): half the rounding error of (a * b) + (c * d). Saturates.
+inline fixed dot2(fixed a, fixed b, fixed c, fixed d) noexcept {
+    const int64_t p = int64_t{a.raw()} * b.raw(), q = int64_t{c.raw()} * d.raw();  // |.| <= 2^62
+    int64_t sum;
+    if (__builtin_add_overflow(p, q, &sum)) return p > 0 ? fixed::max() : fixed::min();
+    if (sum >= (int64_t{1} << 62) - (int64_t{1} << 15)) return fixed::max();
+    return fixed::from_raw(detail::saturate32(detail::round_shift(sum, 16)));
+}
+
+// x Sf(u), x ASf(u), x ATf(u) (that is S_K, AS_K, AT_K) with one rounding: inside the tables
+// the product is taken from the table's Q28/Q30 value, so x does not multiply the Q16.16
+// rounding of f(u) (worth a step or two of accuracy for x of a few units). Outside the tables,
+// the product of the rounded values.
+inline fixed mul_Sf(fixed x, fixed u) noexcept {
+    using namespace tables;
+    const int32_t r = u.raw();
+    if (r >= -(kSfCfRange << 16) && r <= (kSfCfRange << 16))
+        return detail::times_table_value<28>(x, detail::lerp_table_raw<kSfStepBits>(sf_q28, r, -(kSfCfRange << 16)));
+    return x * Sf(u);
+}
+inline fixed mul_ASf(fixed x, fixed u) noexcept {
+    using namespace tables;
+    const int32_t r = u.raw();
+    if (r >= -(kASfLow << 16) && r <= (1 << 15))
+        return detail::times_table_value<30>(x, detail::lerp_table_raw<kASfStepBits>(asf_q30, r, -(kASfLow << 16)));
+    return x * ASf(u);
+}
+inline fixed mul_ATf(fixed x, fixed u) noexcept {
+    using namespace tables;
+    const int32_t r = u.raw();
+    if (r >= -(1 << 15) && r <= 65536)
+        return detail::times_table_value<30>(x, detail::lerp_table_raw<kATfStepBits>(atf_q30, r, -(1 << 15)));
+    return x * ATf(u);
 }
 
 // sqrt(x^2 + y^2) without overflow in the squares (64-bit sum), correctly rounded.

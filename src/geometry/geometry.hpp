@@ -1,0 +1,291 @@
+// The paper's triangle solutions in polar coordinates, in forms that are exact for every
+// curvature K, including 0, and never divide by zero (design.md, "Where the paper's formulas
+// break"). Written once, templated on the scalar: double (the reference engine), float, and
+// fx::fixed (the device engine).
+//
+// Conventions
+// - A position is polar (r, theta) about the screen centre O. theta runs counter-clockwise from
+//   east as seen on screen (screen y grows downward: y_px = cy - rho sin theta).
+// - Directions at a point P (a body's facing, its direction of travel, the heading of an edge)
+//   are angles in the frame carried from O along the ray O->P by parallel transport. In that
+//   frame the outward radial direction at P has angle theta_P, exactly as in the flat plane;
+//   at r = 0 the carried frame is the global frame, so the convention is regular there.
+// - A body's local vertex (rho, phi): distance rho from the centre, at angle phi measured
+//   counter-clockwise from the body's facing. Its direction at the centre is facing + phi.
+// - The paper measures the angle at the centre C from the direction toward O (its alpha). In
+//   these terms alpha = heading - (theta_C + pi): the direction toward O has carried angle
+//   theta_C + pi. The code below uses delta = heading - theta_C (from the outward radial),
+//   so alpha = delta - pi.
+// - Lengths are in world units; at K = +1 the whole sphere is r <= pi.
+//
+// The 3-vector model (design.md): a point is p = (C_K(r), S_K(r) cos theta, S_K(r) sin theta)
+// with <p, q> = w1 w2 + K (x1 x2 + y1 y2) = C_K(dist). Every solution below is the polar
+// reading of a small piece of that model, written without 1/sqrt|K| and without acos.
+#pragma once
+
+#include <cmath>
+
+#include "geometry/scalar.hpp"
+
+namespace noneuclid::geo {
+
+template <class T>
+struct Polar {
+    T r{}, theta{};
+};
+
+// A point (or a tangent vector) of the 3-vector model.
+template <class T>
+struct Vec3 {
+    T w{}, x{}, y{};
+};
+
+// ---- S_K, C_K and their inverses --------------------------------------------------------
+
+// S_K(x) = sin(sqrt K x)/sqrt K, x, sinh(sqrt -K x)/sqrt -K for K >, =, < 0: one formula.
+template <class T>
+T S_K(T K, T x) {
+    return mul_Sf(x, K * x * x);
+}
+template <class T>
+T C_K(T K, T x) {
+    return Cf(K * x * x);
+}
+// The inverse of S_K on [0, pi/(2 sqrt K)] (K > 0) or everywhere (K <= 0).
+template <class T>
+T AS_K(T K, T y) {
+    return mul_ASf(y, K * y * y);
+}
+// The inverse of the tangent T_K = S_K / C_K on the same range.
+template <class T>
+T AT_K(T K, T t) {
+    return mul_ATf(t, K * t * t);
+}
+
+// The distance r >= 0 whose S_K is s >= 0 and C_K is c: the polar inverse of the 3-vector model,
+// well conditioned everywhere. With t = s / (1 + c) = T_K(r/2) (no cancellation while c >= 0),
+// r = 2 AT_K(t). Past the sphere's equator (c < 0, only when K > 0) the point is read from the
+// antipode instead: r = pi/sqrt K - 2 AT_K(s / (1 - c)).
+template <class T>
+T arc_K(T K, T s, T c) {
+    using std::sqrt;
+    if (c >= T(0)) return T(2) * AT_K(K, s / (T(1) + c));
+    return pi_v<T> / sqrt(K) - T(2) * AT_K(K, s / (T(1) - c));
+}
+
+template <class T>
+Vec3<T> to_vec(T K, Polar<T> p) {
+    using std::cos, std::sin;
+    const T s = S_K(K, p.r);
+    return {C_K(K, p.r), s * cos(p.theta), s * sin(p.theta)};
+}
+// Back to polar; theta = 0 at O.
+template <class T>
+Polar<T> to_polar(T K, Vec3<T> v) {
+    using std::atan2;
+    return {arc_K(K, hypot(v.x, v.y), v.w), atan2(v.y, v.x)};
+}
+
+// ---- distance ----------------------------------------------------------------------------
+
+// Geodesic distance, haversine form (valid for all K, no cancellation for short distances):
+//   S_K(d/2)^2 = S_K((r1 - r2)/2)^2 + S_K(r1) S_K(r2) sin^2((theta1 - theta2)/2)
+template <class T>
+T distance(T K, Polar<T> p, Polar<T> q) {
+    using std::sin, std::sqrt;
+    const T a = S_K(K, (p.r - q.r) / T(2));
+    const T h = sin((p.theta - q.theta) / T(2));
+    const T hav = a * a + S_K(K, p.r) * S_K(K, q.r) * h * h;
+    return T(2) * AS_K(K, sqrt(hav));
+}
+
+// ---- the triangle O - P - Q -----------------------------------------------------------------
+
+// Where a walk ends: the end point and the direction of travel carried along the walk,
+// expressed in the end point's carried frame.
+template <class T>
+struct Walk {
+    Polar<T> end;
+    T heading{};
+};
+
+// From p, go distance b along the geodesic leaving p at `heading` (carried frame). This is the
+// paper's triangle O-P-Q solved in the 3-vector model, in a frame rotated so that p lies on +x:
+//   Q = C_K(b) P + S_K(b) (cos delta e_r + sin delta e_theta),   delta = heading - theta_p
+// and the carried direction of travel T' = -K S_K(b) P + C_K(b) (cos delta e_r + ...). The
+// end's bearing from O is atan2(Q_y, Q_x) (design.md: no acos, no division, fine at r = 0).
+template <class T>
+Walk<T> walk(T K, Polar<T> p, T heading, T b) {
+    using std::atan2, std::cos, std::sin;
+    const T delta = heading - p.theta;
+    const T cd = cos(delta), sd = sin(delta);
+    const T sa = S_K(K, p.r), ca = C_K(K, p.r), sb = S_K(K, b), cb = C_K(K, b);
+    const T qw = dot2(ca, cb, -K * sa, sb * cd);
+    const T qx = dot2(sa, cb, ca * sb, cd);
+    const T qy = sb * sd;
+    const T s = hypot(qx, qy);
+    Walk<T> out;
+    out.end = {arc_K(K, s, qw), wrap_pi(p.theta + atan2(qy, qx))};
+    // Carried tangent at the end, split into the end's outward radial e_r and e_theta:
+    //   beta = T'_y cos D - T'_x sin D,   alpha = C (T'_x cos D + T'_y sin D) - S T'_w
+    // (alpha needs no division by K or by C: C^2 + K S^2 = 1).
+    const T tw = -K * dot2(sb, ca, cb * sa, cd);
+    const T tx = dot2(cb * ca, cd, -K * sb, sa);
+    const T ty = cb * sd;
+    if (s == T(0)) {  // the walk ends at O, where the carried frame is the global one
+        out.heading = wrap_pi(p.theta + atan2(ty, tx));
+        return out;
+    }
+    T alpha, beta;
+    if (s > T(1)) {  // unit (cos D, sin D): keeps fixed-point products in range
+        const T cD = qx / s, sD = qy / s;
+        alpha = dot2(qw, dot2(tx, cD, ty, sD), -s, tw);
+        beta = dot2(ty, cD, -tx, sD);
+    } else {  // the same times s: no division when s is small
+        alpha = dot2(qw, dot2(tx, qx, ty, qy), -s * s, tw);
+        beta = dot2(ty, qx, -tx, qy);
+    }
+    out.heading = wrap_pi(out.end.theta + atan2(beta, alpha));
+    return out;
+}
+
+// The direction (carried frame at p) of the geodesic from p toward q. The component of q
+// across p's outward radial is S_q sin D, along it C_p S_q cos D - S_p C_q (D = theta_q -
+// theta_p). atan2(0, 0) = 0 when q = p.
+template <class T>
+T bearing(T K, Polar<T> p, Polar<T> q) {
+    using std::atan2, std::cos, std::sin;
+    const T dth = q.theta - p.theta;
+    const T sq = S_K(K, q.r);
+    const T along = dot2(C_K(K, p.r) * sq, cos(dth), -S_K(K, p.r), C_K(K, q.r));
+    const T across = sq * sin(dth);
+    return wrap_pi(p.theta + atan2(across, along));
+}
+
+// ---- the paper's four solutions --------------------------------------------------------------
+
+// (a) A vertex's global position from the body centre, the body's facing (carried frame) and
+//     the local polar vertex (rho, phi from the facing).
+template <class T>
+Polar<T> vertex_position(T K, Polar<T> centre, T facing, Polar<T> local) {
+    return walk(K, centre, facing + local.theta, local.r).end;
+}
+
+// (b) An edge: its length and the angle at O between its end points' position vectors.
+template <class T>
+struct Edge {
+    T length{}, angle{};
+};
+template <class T>
+Edge<T> edge(T K, Polar<T> p, Polar<T> q) {
+    return {distance(K, p, q), wrap_pi(q.theta - p.theta)};
+}
+
+// (c) Points along the edge p -> q at tessellation level n: n segments, n + 1 points, at
+//     fractions k/n of the length (k = 0 .. n), by the generalised slerp of design.md
+//         X(t) = (S_K((1 - t) d) P + S_K(t d) Q) / S_K(d),
+//     with the ratios written as (1 - t) Sf(K ((1-t)d)^2) / Sf(K d^2), which has no 0/0 at
+//     d = 0. For antipodal ends on the sphere (S_K(d) = 0: every great circle through them is
+//     a geodesic) the edge follows the one through p's radial line. out(k, Polar) is called
+//     for each point.
+template <class T, class Out>
+void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
+    const T d = distance(K, p, q);
+    const T sfd = Sf(K * d * d);
+    if (sfd * d <= num<T>(1e-4) && K > T(0) && d > T(0)) {  // antipodal: no unique geodesic
+        const T heading = p.r > T(0) ? p.theta : q.theta;
+        for (int k = 0; k <= n; ++k) out(k, walk(K, p, heading, d * T(k) / T(n)).end);
+        return;
+    }
+    const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
+    out(0, p);
+    for (int k = 1; k < n; ++k) {
+        const T t = T(k) / T(n), u = T(n - k) / T(n);
+        const T a = u * Sf(K * (u * d) * (u * d)) / sfd;
+        const T b = t * Sf(K * (t * d) * (t * d)) / sfd;
+        out(k, to_polar(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}));
+    }
+    out(n, q);
+}
+
+// (d) Moving a body centre distance d along its direction of travel: the new centre, the
+//     direction of travel carried along the geodesic, and the facing carried with it (the
+//     paper's corollary: a non-rotating body keeps its angle to its path).
+template <class T>
+struct Pose {
+    Polar<T> centre;
+    T travel{};  // direction of travel, carried frame
+    T facing{};  // carried frame
+};
+template <class T>
+Pose<T> move(T K, Pose<T> pose, T d) {
+    const Walk<T> w = walk(K, pose.centre, pose.travel, d);
+    return {w.end, w.heading, wrap_pi(pose.facing + (w.heading - pose.travel))};
+}
+
+// ---- projections ---------------------------------------------------------------------------
+
+// Screen radius rho = f_K(r) of a point at distance r from O, continuous in K; at K = 0 every
+// projection is rho = r. Multiply by (disk radius in px) / (limit radius R) for pixels.
+enum class Projection {
+    azimuthal_equidistant,  // the paper's: rho = r
+    stereographic,          // rho = 2 T_K(r/2); the Poincare disk when K < 0
+    gnomonic,               // rho = T_K(r); Beltrami-Klein when K < 0 (geodesics are straight)
+    orthographic,           // rho = S_K(r)
+    lambert_equal_area,     // rho = 2 S_K(r/2)
+};
+inline constexpr Projection kProjections[] = {
+    Projection::azimuthal_equidistant, Projection::stereographic, Projection::gnomonic,
+    Projection::orthographic, Projection::lambert_equal_area};
+inline const char* projection_name(Projection p) {
+    switch (p) {
+        case Projection::azimuthal_equidistant: return "equidistant";
+        case Projection::stereographic: return "stereographic";
+        case Projection::gnomonic: return "gnomonic";
+        case Projection::orthographic: return "orthographic";
+        case Projection::lambert_equal_area: return "lambert";
+    }
+    return "?";
+}
+
+// visible = false where a projection cannot show the point: the gnomonic and orthographic
+// views of the far hemisphere (C_K(r) <= 0, resp. < 0), the stereographic view of the
+// antipode. The caller clips those (and anything beyond the screen).
+template <class T>
+struct Projected {
+    T rho{};
+    bool visible = true;
+};
+template <class T>
+Projected<T> project(T K, T r, Projection p) {
+    switch (p) {
+        case Projection::azimuthal_equidistant: return {r, true};
+        case Projection::stereographic: {
+            const T h = r / T(2), c = C_K(K, h);
+            if (c <= T(0)) return {T(0), false};
+            return {T(2) * S_K(K, h) / c, true};
+        }
+        case Projection::gnomonic: {
+            const T c = C_K(K, r);
+            if (c <= T(0)) return {T(0), false};
+            return {S_K(K, r) / c, true};
+        }
+        case Projection::orthographic:
+            return {S_K(K, r), !(C_K(K, r) < T(0))};
+        case Projection::lambert_equal_area: return {T(2) * S_K(K, r / T(2)), true};
+    }
+    return {r, true};
+}
+
+// A screen point: centre (cx, cy) in px, `scale` px per unit of rho.
+template <class T>
+struct ScreenPoint {
+    T x{}, y{};
+};
+template <class T>
+ScreenPoint<T> to_screen(T rho, T theta, T cx, T cy, T scale) {
+    using std::cos, std::sin;
+    return {cx + scale * rho * cos(theta), cy - scale * rho * sin(theta)};
+}
+
+}  // namespace noneuclid::geo

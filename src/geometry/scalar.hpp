@@ -1,0 +1,90 @@
+// What the geometry needs of a scalar, for double and float; the fixed-point type brings its
+// own (src/fixed/math.hpp) and is found by argument-dependent lookup. Geometry code is written
+// once as templates in namespace noneuclid::geo and calls these unqualified:
+//     using std::sin; ... sin(x), Sf(u), wrap_pi(a)
+#pragma once
+
+#include <cmath>
+#include <type_traits>
+
+#include "fixed/math.hpp"
+
+namespace noneuclid::geo {
+
+using fx::fixed;
+
+template <class T>
+constexpr T pi_v = T(3.14159265358979323846);
+
+namespace detail {
+// The curvature functions of design.md in floating point. Series near u = 0, where the closed
+// forms would divide 0 by 0; the series are truncated where the next term is below 1e-17.
+template <class T>
+T Sf(T u) {
+    using std::fabs, std::sin, std::sinh, std::sqrt;
+    if (fabs(u) < T(1e-3)) return T(1) - u / 6 + u * u / 120 - u * u * u / 5040;
+    const T s = sqrt(fabs(u));
+    return u > 0 ? sin(s) / s : sinh(s) / s;
+}
+template <class T>
+T Cf(T u) {
+    using std::cos, std::cosh, std::fabs, std::sqrt;
+    if (fabs(u) < T(1e-3)) return T(1) - u / 2 + u * u / 24 - u * u * u / 720;
+    const T s = sqrt(fabs(u));
+    return u > 0 ? cos(s) : cosh(s);
+}
+// ASf(u) for u <= 1 (clamped there: S_K never exceeds 1/sqrt K but rounding may).
+template <class T>
+T ASf(T u) {
+    using std::asin, std::asinh, std::fabs, std::sqrt;
+    if (u >= 1) return pi_v<T> / 2;
+    if (fabs(u) < T(1e-3)) return T(1) + u / 6 + T(3) * u * u / 40 + T(5) * u * u * u / 112;
+    const T s = sqrt(fabs(u));
+    return u > 0 ? asin(s) / s : asinh(s) / s;
+}
+// ATf(u) for u > -1 (infinite at -1).
+template <class T>
+T ATf(T u) {
+    using std::atan, std::atanh, std::fabs, std::sqrt;
+    if (fabs(u) < T(1e-3)) return T(1) - u / 3 + u * u / 5 - u * u * u / 7;
+    if (u <= -1) return T(INFINITY);
+    const T s = sqrt(fabs(u));
+    return u > 0 ? atan(s) / s : atanh(s) / s;
+}
+}  // namespace detail
+
+inline double Sf(double u) { return detail::Sf(u); }
+inline float Sf(float u) { return detail::Sf(u); }
+inline double Cf(double u) { return detail::Cf(u); }
+inline float Cf(float u) { return detail::Cf(u); }
+inline double ASf(double u) { return detail::ASf(u); }
+inline float ASf(float u) { return detail::ASf(u); }
+inline double ATf(double u) { return detail::ATf(u); }
+inline float ATf(float u) { return detail::ATf(u); }
+inline double hypot(double x, double y) { return std::sqrt(x * x + y * y); }
+inline float hypot(float x, float y) { return std::sqrt(x * x + y * y); }
+
+// x f(u) for the curvature functions; the fx:: versions round once.
+inline double mul_Sf(double x, double u) { return x * Sf(u); }
+inline float mul_Sf(float x, float u) { return x * Sf(u); }
+inline double mul_ASf(double x, double u) { return x * ASf(u); }
+inline float mul_ASf(float x, float u) { return x * ASf(u); }
+inline double mul_ATf(double x, double u) { return x * ATf(u); }
+inline float mul_ATf(float x, float u) { return x * ATf(u); }
+
+// a b + c d; fx::dot2 rounds once.
+inline double dot2(double a, double b, double c, double d) { return a * b + c * d; }
+inline float dot2(float a, float b, float c, float d) { return a * b + c * d; }
+
+// An angle brought into [-pi, pi].
+inline double wrap_pi(double a) { return std::remainder(a, 2 * pi_v<double>); }
+inline float wrap_pi(float a) { return std::remainder(a, 2 * pi_v<float>); }
+inline fixed wrap_pi(fixed a) { return fx::angle::from_radians(a).to_radians(); }
+
+// Converts a double constant to the scalar (compile-time for fixed).
+template <class T>
+constexpr T num(double v) {
+    return T(v);
+}
+
+}  // namespace noneuclid::geo
