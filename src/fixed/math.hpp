@@ -279,6 +279,14 @@ inline fixed sin(angle a) noexcept { return sin_unit(a).as<16>(); }
 inline fixed cos(angle a) noexcept { return cos_unit(a).as<16>(); }
 inline fixed sin(fixed x) noexcept { return sin(angle::from_radians(x)); }
 inline fixed cos(fixed x) noexcept { return cos(angle::from_radians(x)); }
+// sin(x/2) for x first brought into [-pi, pi): the halving is exact in the binary angle, where
+// x / 2 in Q16.16 would round away half a step.
+inline fixed sin_half(fixed x) noexcept { return sin(angle::from_radians(x).half()); }
+// y sin(x/2), rounded once from the Q2.30 sine: y does not multiply sin's Q16.16 rounding.
+inline fixed mul_sin_half(fixed y, fixed x) noexcept {
+    return fixed::from_raw(detail::saturate32(
+        detail::round_shift(int64_t{y.raw()} * sin_unit(angle::from_radians(x).half()).raw(), 30)));
+}
 
 // The direction of (x, y) as a binary angle, counter-clockwise from +x. Works on the raw
 // integers, so any Q format (the same for both) gives the same answer. atan2(0, 0) = 0.

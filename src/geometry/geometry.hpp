@@ -90,13 +90,17 @@ Polar<T> to_polar(T K, Vec3<T> v) {
 
 // Geodesic distance, haversine form (valid for all K, no cancellation for short distances):
 //   S_K(d/2)^2 = S_K((r1 - r2)/2)^2 + S_K(r1) S_K(r2) sin^2((theta1 - theta2)/2)
+// taken as S_K(d/2) = hypot(S_K((r1 - r2)/2), sqrt S_K(r1) sqrt S_K(r2) sin(...)), so that no
+// small quantity is squared (in Q16.16, the square of 0.01 keeps two significant digits).
 template <class T>
 T distance(T K, Polar<T> p, Polar<T> q) {
     using std::sin, std::sqrt;
     const T a = S_K(K, (p.r - q.r) / T(2));
-    const T h = sin((p.theta - q.theta) / T(2));
-    const T hav = a * a + S_K(K, p.r) * S_K(K, q.r) * h * h;
-    return T(2) * AS_K(K, sqrt(hav));
+    // sqrt(S_K(r1) S_K(r2)) sin(dtheta/2); only its square matters, so the sign is free.
+    // (S_K may round to a hair below 0 at the sphere's antipode: clamp before the roots.)
+    const T s1 = S_K(K, p.r), s2 = S_K(K, q.r);
+    const T g = mul_sin_half(sqrt(s1 > T(0) ? s1 : T(0)) * sqrt(s2 > T(0) ? s2 : T(0)), p.theta - q.theta);
+    return T(2) * AS_K(K, hypot(a, g));
 }
 
 // ---- the triangle O - P - Q -----------------------------------------------------------------
@@ -192,9 +196,12 @@ template <class T, class Out>
 void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
     const T d = distance(K, p, q);
     const T sfd = Sf(K * d * d);
-    if (sfd * d <= num<T>(1e-4) && K > T(0) && d > T(0)) {  // antipodal: no unique geodesic
+    // Antipodal on the sphere (S_K(d) ~ 0 with d near pi/sqrt K, not merely d ~ 0).
+    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) {
         const T heading = p.r > T(0) ? p.theta : q.theta;
-        for (int k = 0; k <= n; ++k) out(k, walk(K, p, heading, d * T(k) / T(n)).end);
+        out(0, p);
+        for (int k = 1; k < n; ++k) out(k, walk(K, p, heading, d * T(k) / T(n)).end);
+        out(n, q);
         return;
     }
     const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
@@ -262,12 +269,12 @@ Projected<T> project(T K, T r, Projection p) {
         case Projection::azimuthal_equidistant: return {r, true};
         case Projection::stereographic: {
             const T h = r / T(2), c = C_K(K, h);
-            if (c <= T(0)) return {T(0), false};
+            if (c <= num<T>(1e-6)) return {T(0), false};  // at (or a rounding short of) the antipode
             return {T(2) * S_K(K, h) / c, true};
         }
         case Projection::gnomonic: {
             const T c = C_K(K, r);
-            if (c <= T(0)) return {T(0), false};
+            if (c <= num<T>(1e-6)) return {T(0), false};  // the far hemisphere
             return {S_K(K, r) / c, true};
         }
         case Projection::orthographic:

@@ -64,6 +64,13 @@ inline float ATf(float u) { return detail::ATf(u); }
 inline double hypot(double x, double y) { return std::sqrt(x * x + y * y); }
 inline float hypot(float x, float y) { return std::sqrt(x * x + y * y); }
 
+// sin(x/2) for x first brought into [-pi, pi] (fx::sin_half halves exactly).
+inline double sin_half(double x) { return std::sin(std::remainder(x, 2 * pi_v<double>) / 2); }
+inline float sin_half(float x) { return std::sin(std::remainder(x, 2 * pi_v<float>) / 2); }
+
+inline double mul_sin_half(double y, double x) { return y * sin_half(x); }
+inline float mul_sin_half(float y, float x) { return y * sin_half(x); }
+
 // x f(u) for the curvature functions; the fx:: versions round once.
 inline double mul_Sf(double x, double u) { return x * Sf(u); }
 inline float mul_Sf(float x, float u) { return x * Sf(u); }
