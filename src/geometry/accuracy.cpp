@@ -248,4 +248,46 @@ int measure_continuity(const GeometryReportOptions& o, ContinuityRow* rows, int 
     return n;
 }
 
+int short_distance_row_count() { return 7; }
+
+int measure_short_distance(const GeometryReportOptions& o, ShortDistanceRow* rows, int capacity) {
+    const double lengths[] = {1e-3, 1e-5, 1e-7};
+    const char* engines[] = {"double", "paper", "fixed"};
+    int n = 0;
+    for (double len : lengths)
+        for (const char* engine : engines) {
+            if (n >= capacity) return n;
+            if (engine[0] == 'f' && len < 1e-3) continue;  // below a few Q16.16 steps: nothing to measure
+            ShortDistanceRow r{engine, len, 0, 0};
+            Rng rng{o.seed + 11};
+            for (double K : {-1.0, -0.5, -0.02, 0.02, 0.5, 1.0})
+                for (int i = 0; i < 200; ++i) {
+                    const Polar<double> p{rng.uniform(0.1, 2.5), rng.uniform(-kPi, kPi)};
+                    const Polar<double> qq = ref::vertex(K, p, rng.uniform(-kPi, kPi), {len, 0.0});
+                    const double want = ref::distance(K, p, qq);
+                    double got;
+                    if (engine[0] == 'd')
+                        got = distance(K, p, qq);
+                    else if (engine[0] == 'p')
+                        got = paper::distance(K, p, qq, 0.0);
+                    else  // fixed: both points rounded to Q16.16; the reference on the same
+                        got = distance<fixed>(fixed(K), {fixed(p.r), fixed(p.theta)}, {fixed(qq.r), fixed(qq.theta)}).to_double();
+                    if (engine[0] == 'f') {
+                        const Polar<double> pr{q(p.r), q(p.theta)}, qr{q(qq.r), q(qq.theta)};
+                        const double w = ref::distance(q(K), pr, qr);
+                        if (!std::isfinite(got)) { ++r.nonfinite; continue; }
+                        r.max_rel = std::max(r.max_rel, std::fabs(got - w) / len);
+                        continue;
+                    }
+                    if (!std::isfinite(got)) {
+                        ++r.nonfinite;
+                        continue;
+                    }
+                    r.max_rel = std::max(r.max_rel, std::fabs(got - want) / want);
+                }
+            rows[n++] = r;
+        }
+    return n;
+}
+
 }  // namespace noneuclid::geo

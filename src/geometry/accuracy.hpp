@@ -35,6 +35,15 @@ struct ContinuityRow {
     bool pass;
 };
 
+// Relative error of the distance between two points a short way apart, where acos of a law
+// of cosines near 1 loses half the digits.
+struct ShortDistanceRow {
+    const char* engine;
+    double length;         // the distance measured
+    double max_rel;        // max |got - reference| / length over K in {-1, -0.5, -0.02, 0.02, 0.5, 1}
+    long nonfinite;
+};
+
 struct GeometryReportOptions {
     uint64_t seed = 20190101;
     int bodies = 40;       // per K
@@ -46,5 +55,7 @@ int continuity_row_count();
 // Fill up to `capacity` rows; return how many were filled.
 int measure_screen_error(const GeometryReportOptions& o, ScreenErrorRow* rows, int capacity);
 int measure_continuity(const GeometryReportOptions& o, ContinuityRow* rows, int capacity);
+int short_distance_row_count();
+int measure_short_distance(const GeometryReportOptions& o, ShortDistanceRow* rows, int capacity);
 
 }  // namespace noneuclid::geo

@@ -358,3 +358,27 @@ TEST(Screen, FixedEngineWithinAQuarterPixelOfDouble) {
 }
 
 }  // namespace
+
+namespace {
+// Short distances: the haversine form keeps its digits where acos of the law of cosines (the
+// paper) loses half of them, and at 1e-7 all of them.
+TEST(Screen, ShortDistancesKeepTheirDigits) {
+    std::vector<ShortDistanceRow> rows(static_cast<std::size_t>(short_distance_row_count()));
+    const int n = measure_short_distance({}, rows.data(), static_cast<int>(rows.size()));
+    ASSERT_EQ(n, short_distance_row_count());
+    for (const ShortDistanceRow& r : rows) {
+        const std::string e = r.engine;
+        if (e == "double") {
+            // inputs carry ~1e-15 absolute error (r up to 2.5), so relative ~1e-15 / length
+            EXPECT_LE(r.max_rel, 2e-13 / r.length) << r.length;
+            EXPECT_EQ(r.nonfinite, 0);
+        }
+        if (e == "fixed") {
+            EXPECT_LE(r.max_rel * r.length, 6e-5);  // four Q16.16 steps
+        }
+        if (e == "paper" && r.length <= 1e-7) {
+            EXPECT_GT(r.max_rel, 0.1);
+        }
+    }
+}
+}  // namespace
