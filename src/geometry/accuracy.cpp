@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <vector>
 
 #include "geometry/geometry.hpp"
 #include "geometry/paper.hpp"
 #include "geometry/reference.hpp"
+#include "geometry/screen.hpp"
 
 namespace noneuclid::geo {
 namespace {
@@ -92,9 +94,8 @@ void solve_paper(double K, const Body& b, std::vector<Polar<double>>& verts, std
 using Solver = std::function<void(double, const Body&, std::vector<Polar<double>>&, std::vector<Polar<double>>&)>;
 
 double px_distance(Polar<double> a, Polar<double> b) {
-    const double ax = a.r * std::cos(a.theta), ay = a.r * std::sin(a.theta);
-    const double bx = b.r * std::cos(b.theta), by = b.r * std::sin(b.theta);
-    return kPxPerUnit * std::hypot(ax - bx, ay - by);
+    const glm::dvec2 centre(540, 540);
+    return glm::length(screen_point(a.r, a.theta, centre, kPxPerUnit) - screen_point(b.r, b.theta, centre, kPxPerUnit));
 }
 bool finite(Polar<double> p) { return std::isfinite(p.r) && std::isfinite(p.theta); }
 // Inside the disk the report covers: the limit circle, less 2% near the antipodal rim (K > 0).

@@ -382,3 +382,19 @@ TEST(Screen, ShortDistancesKeepTheirDigits) {
     }
 }
 }  // namespace
+
+#include "geometry/screen.hpp"
+
+namespace {
+// theta counter-clockwise as seen: north (theta = pi/2) is up the screen, i.e. smaller y.
+TEST(Projection, ScreenYGrowsDownward) {
+    const glm::dvec2 n = screen_point(1.0, kPi / 2, glm::dvec2(100, 100), 10);
+    EXPECT_NEAR(n.x, 100, 1e-12);
+    EXPECT_NEAR(n.y, 90, 1e-12);
+    const ScreenPoint<fixed> e = to_screen(fixed(1), fixed(0), fixed(100), fixed(100), fixed(10));
+    EXPECT_EQ(e.x, fixed(110));
+    EXPECT_EQ(e.y, fixed(100));
+    const ScreenPoint<fixed> s = to_screen(fixed(1), fixed(-kPi / 2), fixed(100), fixed(100), fixed(10));
+    EXPECT_NEAR(s.y.to_double(), 110, 1e-3);
+}
+}  // namespace
