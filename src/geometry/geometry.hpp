@@ -106,11 +106,13 @@ T distance(T K, Polar<T> p, Polar<T> q) {
 // ---- the triangle O - P - Q -----------------------------------------------------------------
 
 // Where a walk ends: the end point and the direction of travel carried along the walk,
-// expressed in the end point's carried frame.
+// expressed in the end point's carried frame; `turn` is heading_end - heading_start, the angle
+// by which the carried frame turned (0 on every geodesic of the flat plane).
 template <class T>
 struct Walk {
     Polar<T> end;
     T heading{};
+    T turn{};
 };
 
 // From p, go distance b along the geodesic leaving p at `heading` (carried frame). This is the
@@ -130,26 +132,37 @@ Walk<T> walk(T K, Polar<T> p, T heading, T b) {
     const T s = hypot(qx, qy);
     Walk<T> out;
     out.end = {arc_K(K, s, qw), wrap_pi(p.theta + atan2(qy, qx))};
-    // Carried tangent at the end, split into the end's outward radial e_r and e_theta:
-    //   beta = T'_y cos D - T'_x sin D,   alpha = C (T'_x cos D + T'_y sin D) - S T'_w
-    // (alpha needs no division by K or by C: C^2 + K S^2 = 1).
+    // The carried direction of travel at the end, T' = -K S_K(b) P + C_K(b) (cos delta e_r + ...):
     const T tw = -K * dot2(sb, ca, cb * sa, cd);
     const T tx = dot2(cb * ca, cd, -K * sb, sa);
     const T ty = cb * sd;
-    if (s == T(0)) {  // the walk ends at O, where the carried frame is the global one
-        out.heading = wrap_pi(p.theta + atan2(ty, tx));
-        return out;
-    }
-    T alpha, beta;
-    if (s > T(1)) {  // unit (cos D, sin D): keeps fixed-point products in range
+    // The new heading is found as heading + turn, the turn as the angle of (X, Y) below rotated
+    // back by delta: a small angle computed directly, so a straight path does not drift by a
+    // rounding of sin/cos/atan2 at every step (in the flat plane the turn is exactly 0).
+    T X, Y;  // the direction of T' in the frame rotated so that p lies on +x
+    if (s > T(1)) {
+        // Far from O: split T' into the end's outward radial e_r and e_theta, with the end's
+        // bearing D (cos D = qx/s, sin D = qy/s):
+        //   alpha = C (T'_x cos D + T'_y sin D) - S T'_w,   beta = T'_y cos D - T'_x sin D
+        // (no division by K or by C: C^2 + K S^2 = 1); (X, Y) is (alpha, beta) rotated by D.
         const T cD = qx / s, sD = qy / s;
-        alpha = dot2(qw, dot2(tx, cD, ty, sD), -s, tw);
-        beta = dot2(ty, cD, -tx, sD);
-    } else {  // the same times s: no division when s is small
-        alpha = dot2(qw, dot2(tx, qx, ty, qy), -s * s, tw);
-        beta = dot2(ty, qx, -tx, qy);
+        const T alpha = dot2(qw, dot2(tx, cD, ty, sD), -s, tw);
+        const T beta = dot2(ty, cD, -tx, sD);
+        X = dot2(alpha, cD, -beta, sD);
+        Y = dot2(alpha, sD, beta, cD);
+    } else {
+        // Near O the end's bearing D is ill-conditioned, so the rotation by D is done in closed
+        // form: with 1 - C = K S^2 / (1 + C), and times (1 + C) > 0,
+        //   X = (1 + C) (T'_x - T'_w qx) - K qx (T'_x qx + T'_y qy)
+        //   Y = (1 + C) (T'_y - T'_w qy) - K qy (T'_x qx + T'_y qy)
+        // No division, exact at O, no noise from D.
+        const T c1 = T(1) + qw;
+        const T along = dot2(tx, qx, ty, qy);
+        X = dot2(c1, tx - tw * qx, -K * qx, along);
+        Y = dot2(c1, ty - tw * qy, -K * qy, along);
     }
-    out.heading = wrap_pi(out.end.theta + atan2(beta, alpha));
+    out.turn = atan2(dot2(Y, cd, -X, sd), dot2(X, cd, Y, sd));
+    out.heading = wrap_pi(heading + out.turn);
     return out;
 }
 
@@ -227,7 +240,7 @@ struct Pose {
 template <class T>
 Pose<T> move(T K, Pose<T> pose, T d) {
     const Walk<T> w = walk(K, pose.centre, pose.travel, d);
-    return {w.end, w.heading, wrap_pi(pose.facing + (w.heading - pose.travel))};
+    return {w.end, w.heading, wrap_pi(pose.facing + w.turn)};
 }
 
 // ---- projections ---------------------------------------------------------------------------
