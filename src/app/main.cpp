@@ -7,11 +7,16 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "fixed/accuracy.hpp"
 #include "fixed/tables.hpp"
 #include "geometry/accuracy.hpp"
+#include "world/actions.hpp"
+#include "world/dump.hpp"
+#include "world/scene_file.hpp"
+#include "world/world.hpp"
 
 namespace {
 
@@ -23,17 +28,35 @@ void print_help(std::FILE* out) {
                  "\n"
                  "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin,\n"
                  "Child & He (2019). The renderer is not built yet; today the program reports on\n"
-                 "its fixed-point lookup-table trigonometry core.\n"
+                 "its fixed-point core and geometry, and runs worlds without a screen.\n"
                  "\n"
                  "commands:\n"
-                 "  accuracy          measure every fixed-point function against std:: double\n"
-                 "                    and print the table (default when no command is given);\n"
-                 "                    exit status 1 if any row misses its asserted bound\n"
+                 "  accuracy          measure every fixed-point function against std:: double and\n"
+                 "                    the geometry engines at the screen, and print the tables\n"
+                 "                    (default when no command is given); exit status 1 if any\n"
+                 "                    row misses its asserted bound\n"
+                 "  dump              run a scene and write its state as JSON Lines, one line per\n"
+                 "                    frame, frame 0 being the initial state\n"
                  "\n"
                  "options for accuracy:\n"
                  "  --samples N       evenly spaced samples per row (default 262144)\n"
                  "  --random N        seeded random samples per row (default 65536)\n"
                  "  --seed S          seed for the random samples (default 20190101)\n"
+                 "\n"
+                 "options for dump:\n"
+                 "  --scene NAME|FILE a built-in scene (kiosk, fig1, fig14, fig15, fig16, fig17,\n"
+                 "                    stress) or a TOML scene file (default kiosk)\n"
+                 "  --curvature K     start at this K instead of the scene's, -1 <= K <= 1\n"
+                 "  --frames N        steps to run after frame 0 (default 60)\n"
+                 "  --dt S            seconds per step (default 1/60)\n"
+                 "  --engine E        fixed (default: the device's), double, float, or paper\n"
+                 "                    (the paper's formulas, literally)\n"
+                 "  --actions FILE    timed presses and releases (see README, 'Actions')\n"
+                 "  --size WxH        canvas for the \"screen\" points (default 800x480)\n"
+                 "  --projection P    equidistant (default), stereographic, gnomonic,\n"
+                 "                    orthographic, lambert\n"
+                 "  --bodies N, --vertices N, --tessellation N   the stress scene's size\n"
+                 "                    (default 200, 8, 8)\n"
                  "\n"
                  "  -h, --help        show this help\n"
                  "  --version         show the version\n");
@@ -184,11 +207,141 @@ int run_accuracy(const noneuclid::fx::AccuracyOptions& options) {
     return all ? 0 : 1;
 }
 
+
+// ---- dump ------------------------------------------------------------------------------------
+
+struct DumpArgs {
+    std::string scene = "kiosk";
+    bool has_curvature = false;
+    double curvature = 0;
+    long frames = 60;
+    double dt = 1.0 / 60;
+    std::string engine = "fixed";
+    std::string actions;
+    noneuclid::world::DumpOptions dump;
+    noneuclid::world::SceneParams params;
+};
+
+[[noreturn]] void usage_error(const std::string& message) {
+    std::fprintf(stderr, "noneuclid: %s\n", message.c_str());
+    std::exit(2);
+}
+
+double parse_number(const char* option, const char* text, double lo, double hi) {
+    char* end = nullptr;
+    const double v = std::strtod(text, &end);
+    if (*text == '\0' || *end != '\0' || !(v >= lo && v <= hi))
+        usage_error(std::string(option) + " needs a number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+                    ", not '" + text + "'.");
+    return v;
+}
+
+template <class W>
+int run_dump(const noneuclid::world::Scene& scene, const DumpArgs& a,
+             const std::vector<noneuclid::world::ActionEvent>& events) {
+    using T = typename W::scalar;
+    W world(scene);
+    std::string line;
+    std::size_t next = noneuclid::world::apply_actions(world, events, 0, 0.0);
+    noneuclid::world::dump_frame(world, a.dump, line);
+    std::fwrite(line.data(), 1, line.size(), stdout);
+    const T dt(a.dt);
+    for (long f = 0; f < a.frames; ++f) {
+        world.step(dt);
+        next = noneuclid::world::apply_actions(world, events, next, world.time);
+        line.clear();
+        noneuclid::world::dump_frame(world, a.dump, line);
+        if (std::fwrite(line.data(), 1, line.size(), stdout) != line.size()) return 1;
+    }
+    return std::fflush(stdout) == 0 ? 0 : 1;
+}
+
+int dump_command(int argc, char** argv, int i) {
+    using namespace noneuclid::world;
+    DumpArgs a;
+    for (; i < argc; ++i) {
+        const std::string opt = argv[i];
+        auto value = [&]() -> const char* {
+            if (i + 1 >= argc) usage_error(opt + " needs a value; see 'noneuclid --help'.");
+            return argv[++i];
+        };
+        if (opt == "-h" || opt == "--help") {
+            print_help(stdout);
+            return 0;
+        } else if (opt == "--scene") {
+            a.scene = value();
+        } else if (opt == "--curvature") {
+            a.has_curvature = true;
+            a.curvature = parse_number("--curvature", value(), -1, 1);
+        } else if (opt == "--frames") {
+            a.frames = static_cast<long>(parse_count("--frames", value(), 0, 100000000));
+        } else if (opt == "--dt") {
+            a.dt = parse_number("--dt", value(), 1e-4, 1);
+        } else if (opt == "--engine") {
+            a.engine = value();
+            if (a.engine != "fixed" && a.engine != "double" && a.engine != "float" && a.engine != "paper")
+                usage_error("--engine must be fixed, double, float or paper, not '" + a.engine + "'.");
+        } else if (opt == "--actions") {
+            a.actions = value();
+        } else if (opt == "--size") {
+            const char* v = value();
+            int w = 0, h = 0;
+            char tail = 0;
+            if (std::sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
+                usage_error(std::string("--size needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '") + v + "'.");
+            a.dump.width = w, a.dump.height = h;
+        } else if (opt == "--projection") {
+            const std::string p = value();
+            bool found = false;
+            for (noneuclid::geo::Projection pr : noneuclid::geo::kProjections)
+                if (p == noneuclid::geo::projection_name(pr)) a.dump.projection = pr, found = true;
+            if (!found)
+                usage_error("--projection must be equidistant, stereographic, gnomonic, orthographic or lambert, not '" + p + "'.");
+        } else if (opt == "--bodies") {
+            a.params.bodies = static_cast<int>(parse_count("--bodies", value(), 1, 100000));
+        } else if (opt == "--vertices") {
+            a.params.vertices = static_cast<int>(parse_count("--vertices", value(), 1, 10000));
+        } else if (opt == "--tessellation") {
+            a.params.tessellation = static_cast<int>(parse_count("--tessellation", value(), 1, 256));
+        } else {
+            usage_error("unknown option '" + opt + "' for dump; see 'noneuclid --help'.");
+        }
+    }
+    Scene scene;
+    if (!builtin_scene(a.scene, a.params, scene)) {
+        SceneError err;
+        if (!load_scene_file(a.scene, scene, err)) {
+            if (err.line == 0 && a.scene.find('/') == std::string::npos && a.scene.find(".toml") == std::string::npos) {
+                std::string names;
+                for (const char* const* n = builtin_scene_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
+                usage_error("no built-in scene '" + a.scene + "' and no scene file by that name: the built-in scenes are " +
+                            names + ".");
+            }
+            std::fprintf(stderr, "%s\n", err.to_string().c_str());
+            return 2;
+        }
+    }
+    if (a.has_curvature) scene.curvature = a.curvature;
+    std::vector<ActionEvent> events;
+    if (!a.actions.empty()) {
+        ActionError err;
+        if (!load_actions_file(a.actions, events, err)) {
+            std::fprintf(stderr, "%s\n", err.to_string().c_str());
+            return 2;
+        }
+    }
+    if (a.engine == "double") return run_dump<World<double>>(scene, a, events);
+    if (a.engine == "float") return run_dump<World<float>>(scene, a, events);
+    if (a.engine == "paper") return run_dump<World<double, true>>(scene, a, events);
+    return run_dump<World<noneuclid::fx::fixed>>(scene, a, events);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     noneuclid::fx::AccuracyOptions options;
     int i = 1;
+    if (i < argc && std::strcmp(argv[i], "dump") == 0) return dump_command(argc, argv, i + 1);
     if (i < argc && std::strcmp(argv[i], "accuracy") == 0) ++i;
     for (; i < argc; ++i) {
         const char* a = argv[i];

@@ -160,10 +160,10 @@ std::vector<double> k_sweep(const GeometryReportOptions& o, bool near_zero_only)
 
 const Comparison& comparison(int i) {
     static const Comparison kComparisons[] = {
-        {"fixed", "double", "K in [-1, 1]", solve<fixed>, solve<double>, 0.05, 0.15, false, false},
+        {"fixed", "double", "K in [-1, 1]", solve<fixed>, solve<double>, 0.05, 0.08, false, false},
         {"float", "double", "K in [-1, 1]", solve<float>, solve<double>, 0.01, 0.01, false, false},
         {"double", "reference", "K in [-1, 1]", solve<double>, solve_reference, 1e-7, 1e-7, false, false},
-        {"fixed", "reference", "K in [-1, 1]", solve<fixed>, solve_reference, 0.05, 0.15, false, false},
+        {"fixed", "reference", "K in [-1, 1]", solve<fixed>, solve_reference, 0.05, 0.08, false, false},
         {"double", "reference", "short edges (~1e-3)", solve<double>, solve_reference, 1e-7, 1e-7, false, true},
         {"fixed", "reference", "short edges (~1e-3)", solve<fixed>, solve_reference, 0.05, 0.08, false, true},
         {"paper", "reference", "K in [-1, 1]",

@@ -22,7 +22,7 @@ if [ ! -x "$counter" ]; then
     exit 2
 fi
 . platform/debian/deps.sh
-noneuclid_deps g++ cmake make "$pkg" qemu-user gcc libgtest-dev libglm-dev
+noneuclid_deps g++ cmake make "$pkg" qemu-user gcc libgtest-dev libglm-dev libtomlplusplus-dev
 cmake --preset "$target" >/dev/null
 cmake --build --preset "$target" --target insn_probe -j "$(nproc)" >/dev/null
 probe=build/$target/insn_probe

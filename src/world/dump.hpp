@@ -1,0 +1,133 @@
+// `noneuclid dump`: a world's state as one line of JSON per frame (JSON Lines).
+//
+//   {"frame":0,"t":0,"K":-1,"bodies":[{"name":"ship","center":[r,theta],"facing":psi,
+//    "travel":[speed,chi],"vertices":[[r,theta],...],"edges":[[[r,theta],...],...],
+//    "screen":[[[x,y],...],...]}]}
+//
+// Angles in degrees in (-180, 180]; lengths in world units. Each edge lists its points from one
+// vertex to the next, both ends included (tessellation + 1 points); "screen" holds the same
+// points in pixels with the same nesting, for a canvas of the given size: the limit circle
+// R fills the smaller side, centred, through the given projection; a point the projection
+// cannot show is null.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "geometry/geometry.hpp"
+#include "world/world.hpp"
+
+namespace noneuclid::world {
+
+struct DumpOptions {
+    int width = 800, height = 480;
+    geo::Projection projection = geo::Projection::azimuthal_equidistant;
+};
+
+namespace detail {
+inline void num(std::string& out, double v) {
+    char buf[32];
+    if (!std::isfinite(v)) {
+        out += "null";  // JSON has no NaN; the paper engine can produce one
+        return;
+    }
+    std::snprintf(buf, sizeof buf, "%.9g", v == 0 ? 0.0 : v);
+    out += buf;
+}
+inline double degrees(double rad) {
+    double d = std::remainder(rad, 2 * 3.14159265358979323846) * (180 / 3.14159265358979323846);
+    return d <= -180 ? d + 360 : d;
+}
+inline void polar(std::string& out, double r, double theta) {
+    out += '[';
+    num(out, r);
+    out += ',';
+    num(out, degrees(theta));
+    out += ']';
+}
+}  // namespace detail
+
+// Appends one frame's line (with its newline) to `out`.
+template <class W>
+void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
+    using T = typename W::scalar;
+    using detail::num;
+    const double K = static_cast<double>(world.K), R = static_cast<double>(world.R);
+    const double scale = 0.5 * std::min(o.width, o.height) / R;
+    const double cx = 0.5 * o.width, cy = 0.5 * o.height;
+    out += "{\"frame\":";
+    out += std::to_string(world.frame);
+    out += ",\"t\":";
+    num(out, world.time);
+    out += ",\"K\":";
+    num(out, K);
+    out += ",\"bodies\":[";
+    std::vector<Polar<T>> v;
+    std::vector<std::vector<Polar<T>>> edges;
+    for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
+        const Body<T>& b = world.bodies[bi];
+        v.resize(b.local.size());
+        world.vertices(b, v.data());
+        const std::size_t n = v.size();
+        const std::size_t ne = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
+        edges.assign(ne, {});
+        for (std::size_t e = 0; e < ne; ++e) {
+            edges[e].resize(static_cast<std::size_t>(b.desc->tessellation) + 1);
+            W::engine::edge_points(world.K, v[e], v[(e + 1) % n], b.desc->tessellation,
+                                   [&](int k, Polar<T> p) { edges[e][static_cast<std::size_t>(k)] = p; });
+        }
+        if (bi) out += ',';
+        out += "{\"name\":\"";
+        for (char c : b.desc->name) {
+            if (c == '"' || c == '\\') out += '\\';
+            if (static_cast<unsigned char>(c) >= 0x20) out += c;
+        }
+        out += "\",\"center\":";
+        detail::polar(out, static_cast<double>(b.centre.r), static_cast<double>(b.centre.theta));
+        out += ",\"facing\":";
+        num(out, detail::degrees(static_cast<double>(b.facing)));
+        out += ",\"travel\":[";
+        num(out, static_cast<double>(b.speed));
+        out += ',';
+        num(out, detail::degrees(static_cast<double>(b.travel)));
+        out += "],\"vertices\":[";
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i) out += ',';
+            detail::polar(out, static_cast<double>(v[i].r), static_cast<double>(v[i].theta));
+        }
+        out += "],\"edges\":[";
+        for (std::size_t e = 0; e < ne; ++e) {
+            out += e ? ",[" : "[";
+            for (std::size_t k = 0; k < edges[e].size(); ++k) {
+                if (k) out += ',';
+                detail::polar(out, static_cast<double>(edges[e][k].r), static_cast<double>(edges[e][k].theta));
+            }
+            out += ']';
+        }
+        out += "],\"screen\":[";
+        for (std::size_t e = 0; e < ne; ++e) {
+            out += e ? ",[" : "[";
+            for (std::size_t k = 0; k < edges[e].size(); ++k) {
+                if (k) out += ',';
+                const double r = static_cast<double>(edges[e][k].r), th = static_cast<double>(edges[e][k].theta);
+                const geo::Projected<double> p = geo::project(K, r, o.projection);
+                if (!p.visible || !std::isfinite(p.rho) || !std::isfinite(th)) {
+                    out += "null";
+                    continue;
+                }
+                out += '[';
+                num(out, cx + scale * p.rho * std::cos(th));
+                out += ',';
+                num(out, cy - scale * p.rho * std::sin(th));
+                out += ']';
+            }
+            out += ']';
+        }
+        out += "]}";
+    }
+    out += "]}\n";
+}
+
+}  // namespace noneuclid::world

@@ -1,0 +1,40 @@
+// Scene files in TOML (parsed with toml++). The format (README, "Scene files"):
+//
+//     curvature = -1.0            # K in [-1, 1]
+//     limit_radius = 3.14159      # R in world units
+//     [[body]]
+//     name = "ship"
+//     position = [0.5, 30.0]      # [r, theta deg]
+//     facing = 90.0               # degrees, in the frame carried from O
+//     velocity = [0.2, 90.0]      # [speed in world units per second, direction deg]
+//     spin = 0.0                  # degrees per second
+//     color = "#ff4040"
+//     closed = true
+//     tessellation = 8
+//     vertices = [[0.1, 0.0], [0.1, 140.0], [0.1, 220.0]]   # local [rho, phi deg] from facing
+//
+// plus, all optional: presets = [...], thrust, turn_rate, curvature_rate, sweep_rate at the top;
+// acceleration = [a, direction deg], controlled, grid in a body; [[grid]] tables
+// (kind = "axes" with spacing, or "radial" with lines; length, step, color).
+#pragma once
+
+#include <string>
+
+#include "world/scene.hpp"
+
+namespace noneuclid::world {
+
+struct SceneError {
+    std::string file;
+    long line = 0, column = 0;  // 1-based; 0 when the error has no place (e.g. unreadable file)
+    std::string message;        // what was expected and what was found
+    // "file:line:column: message" (or "file: message")
+    std::string to_string() const;
+};
+
+// Reads a scene file. On failure returns false and fills `error`.
+bool load_scene_file(const std::string& path, Scene& out, SceneError& error);
+// The same from a string (`name` is used in messages in place of a path).
+bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error);
+
+}  // namespace noneuclid::world

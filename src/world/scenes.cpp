@@ -1,0 +1,163 @@
+// The built-in scenes: the paper's figures, the kiosk's default, and a parametric stress scene.
+#include <cmath>
+#include <cstdio>
+
+#include "world/scene.hpp"
+
+namespace noneuclid::world {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The paper gives lengths in its figures' pixels. We read them at the figures' scale: the limit
+// radius pi is 540 px (a 1080-px-high disk), so 90 px = 90 * pi / 540 = pi / 6 world units.
+constexpr double kPaperPixel = kPi / 540;
+
+SceneBody polygon(const char* name, int n, double radius, double phase_deg, Rgb color) {
+    SceneBody b;
+    b.name = name;
+    b.color = color;
+    for (int i = 0; i < n; ++i) b.vertices.push_back({radius, phase_deg + 360.0 * i / n});
+    return b;
+}
+SceneBody ship() {
+    SceneBody b;
+    b.name = "ship";
+    b.color = {255, 64, 64};
+    b.vertices = {{0.12, 0}, {0.08, 140}, {0.08, 220}};
+    b.controlled = true;
+    b.tessellation = 4;
+    return b;
+}
+SceneBody place(SceneBody b, double r, double theta, double facing, double speed, double dir, double spin) {
+    b.r = r, b.theta_deg = theta, b.facing_deg = facing, b.speed = speed, b.direction_deg = dir, b.spin_deg = spin;
+    return b;
+}
+const Rgb kGrid{70, 90, 120};
+
+// A line of vertices along the local direction phi = 0 (and phi = 180 for `both` sides).
+SceneBody line(const char* name, double length, double step, bool both, Rgb color) {
+    SceneBody b;
+    b.name = name;
+    b.color = color;
+    b.closed = false;
+    b.grid = true;
+    b.tessellation = 2;
+    const int m = static_cast<int>(std::ceil(length / step - 1e-9));
+    if (both)
+        for (int j = m; j > 0; --j) b.vertices.push_back({std::min(j * step, length), 180});
+    for (int j = 0; j <= m; ++j) b.vertices.push_back({std::min(j * step, length), 0});
+    return b;
+}
+
+void fig1(Scene& s) {
+    s.curvature = -1;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    s.bodies.push_back(place(polygon("square", 4, 0.3, 45, {255, 200, 64}), 1.2, 20, 0, 0.25, 100, 20));
+    s.bodies.push_back(place(polygon("triangle", 3, 0.3, 90, {64, 220, 120}), 1.6, 150, 30, 0.3, 250, -30));
+    s.bodies.push_back(place(polygon("hexagon", 6, 0.25, 0, {120, 160, 255}), 0.8, 260, 0, 0.2, 10, 15));
+    s.bodies.push_back(place(polygon("circle", 24, 0.2, 0, {230, 120, 230}), 0.3, 60, 0, 0.15, 200, 0));
+    s.bodies.push_back(place(polygon("star", 5, 0.3, 90, {255, 255, 255}), 2.0, 300, 0, 0.2, 120, 45));
+}
+// Motion along the geodesic orthogonal to the direction `deg` at distance 1 from O.
+void orthogonal_motion(Scene& s, double deg) {
+    s.curvature = -1;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    SceneBody b = polygon("square", 4, 0.15, 45, {255, 200, 64});
+    s.bodies.push_back(place(b, 1.0, deg, deg + 90, 0.4, deg + 90, 0));
+}
+void fig16(Scene& s) {
+    s.curvature = -1;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    // The paper's square: vertices (90, pi/8), (90, 3pi/8), (90, 5pi/8), (90, 7pi/8), taken as
+    // written (local rho in the paper's pixels, phi in radians), spinning about its centre.
+    SceneBody b;
+    b.name = "square";
+    b.color = {255, 200, 64};
+    for (double k : {1.0, 3.0, 5.0, 7.0}) b.vertices.push_back({90 * kPaperPixel, k * 22.5});
+    b.tessellation = 16;
+    s.bodies.push_back(place(b, 1.0, 0, 0, 0, 0, 45));
+}
+void fig17(Scene& s) {
+    s.curvature = -1;
+    s.sweep_rate = 0.4;  // -1 to +1 in 5 s, and back
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    s.bodies.push_back(place(polygon("square", 4, 0.2, 45, {255, 200, 64}), 1.5, 180, 0, 0.3, 0, 0));
+}
+void kiosk(Scene& s) {
+    s.curvature = 0;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    add_radial_grid(s, 12, s.limit_radius, 0.25, {50, 60, 80});
+    s.bodies.push_back(place(ship(), 0.5, 30, 90, 0, 90, 0));
+    s.bodies.push_back(place(polygon("square", 4, 0.25, 45, {255, 200, 64}), 1.5, 20, 0, 0.12, 110, 10));
+    s.bodies.push_back(place(polygon("triangle", 3, 0.25, 90, {64, 220, 120}), 1.8, 140, 0, 0.1, 230, -15));
+    s.bodies.push_back(place(polygon("hexagon", 6, 0.2, 0, {120, 160, 255}), 1.2, 250, 0, 0.08, 20, 12));
+    s.bodies.push_back(place(polygon("circle", 24, 0.18, 0, {230, 120, 230}), 2.3, 310, 0, 0.1, 160, 0));
+}
+void stress(Scene& s, const SceneParams& p) {
+    s.curvature = -1;
+    uint32_t x = 2463534242u;  // xorshift32: the same scene every time
+    auto next = [&x] {
+        x ^= x << 13, x ^= x >> 17, x ^= x << 5;
+        return (x >> 8) * (1.0 / 16777216.0);
+    };
+    for (int i = 0; i < p.bodies; ++i) {
+        char name[24];
+        std::snprintf(name, sizeof name, "body%d", i);
+        SceneBody b = polygon(name, p.vertices, 0.1 + 0.2 * next(), 360 * next(),
+                              {static_cast<uint8_t>(80 + 175 * next()), static_cast<uint8_t>(80 + 175 * next()), 200});
+        b.tessellation = p.tessellation;
+        s.bodies.push_back(place(b, 2.9 * next(), 360 * next(), 360 * next(), 0.1 + 0.3 * next(), 360 * next(), 60 * next() - 30));
+    }
+}
+
+}  // namespace
+
+void add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color) {
+    const int n = static_cast<int>(std::floor(scene.limit_radius / spacing + 1e-9));
+    for (int k = -n; k <= n; ++k) {
+        const double d = std::fabs(k * spacing);
+        char name[32];
+        // Perpendicular to the x axis at x = k s: foot on the axis, running north-south.
+        std::snprintf(name, sizeof name, "grid x=%g", k * spacing);
+        SceneBody a = line(name, length, step, true, color);
+        a.r = d, a.theta_deg = k < 0 ? 180 : 0, a.facing_deg = 90;
+        scene.bodies.push_back(a);
+        // Perpendicular to the y axis at y = k s, running east-west.
+        std::snprintf(name, sizeof name, "grid y=%g", k * spacing);
+        SceneBody b = line(name, length, step, true, color);
+        b.r = d, b.theta_deg = k < 0 ? 270 : 90, b.facing_deg = 0;
+        scene.bodies.push_back(b);
+    }
+}
+
+void add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color) {
+    for (int i = 0; i < lines; ++i) {
+        char name[32];
+        std::snprintf(name, sizeof name, "radial %g", 360.0 * i / lines);
+        SceneBody b = line(name, length, step, false, color);
+        b.facing_deg = 360.0 * i / lines;
+        scene.bodies.push_back(b);
+    }
+}
+
+const char* const* builtin_scene_names() {
+    static const char* const names[] = {"kiosk", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
+    return names;
+}
+
+bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out) {
+    out = Scene{};
+    out.name = name;
+    if (name == "kiosk") kiosk(out);
+    else if (name == "fig1") fig1(out);
+    else if (name == "fig14") orthogonal_motion(out, 0);
+    else if (name == "fig15") orthogonal_motion(out, 45);
+    else if (name == "fig16") fig16(out);
+    else if (name == "fig17") fig17(out);
+    else if (name == "stress") stress(out, params);
+    else return false;
+    return true;
+}
+
+}  // namespace noneuclid::world

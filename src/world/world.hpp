@@ -1,0 +1,223 @@
+// The world: K, the limit radius R and the bodies, stepped at a fixed timestep by the paper's
+// physics, driven by the same actions the kiosk buttons send. Templated on the scalar like the
+// geometry; `Paper = true` (double only) moves bodies with the paper's literal formulas.
+//
+// One step of dt, for every body (the paper, section "movement"):
+//  1. acceleration: a body's own (scene files may give one), or for the ship while thrust is
+//     held, `thrust` along its facing; velocity += a dt as vectors in the tangent plane at the
+//     centre (both are angles in the carried frame there). A coasting body (a = 0) keeps its
+//     speed exactly.
+//  2. the centre moves speed * dt along the geodesic in its direction of travel; the direction
+//     of travel, the facing and the acceleration's direction are carried along (geo::move).
+//  3. spin (plus the ship's turn while left/right is held) turns the facing.
+//  4. the limit circle: a centre past R reappears at (2R - r, theta + pi), its direction of
+//     travel and facing unchanged on screen (the same carried-frame angles). At K > 0 with
+//     R = pi/sqrt K this is exactly the geodesic continuing through the antipode (tested).
+// Curvature: changing K leaves every body's polar numbers as they are (the paper); held
+// curvature up/down changes K by `curvature_rate` per second, clamped to [-1, 1]; next preset
+// cycles the scene's presets; reset restores the scene's initial state. Same actions, same
+// result, bit for bit: nothing here reads a clock or a random number.
+//
+// Memory: bodies and their vertices are allocated when the world is built; step() allocates
+// nothing.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <type_traits>
+#include <vector>
+
+#include "geometry/geometry.hpp"
+#include "geometry/paper.hpp"
+#include "world/scene.hpp"
+
+namespace noneuclid::world {
+
+using geo::Polar;
+using geo::Pose;
+
+enum class Action : uint8_t { thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset };
+inline constexpr int kActionCount = 7;
+inline const char* action_name(Action a) {
+    static const char* const names[] = {"thrust", "left", "right", "curvature_up", "curvature_down", "preset", "reset"};
+    return names[static_cast<int>(a)];
+}
+inline bool parse_action(const std::string& s, Action& out) {
+    for (int i = 0; i < kActionCount; ++i)
+        if (s == action_name(static_cast<Action>(i))) {
+            out = static_cast<Action>(i);
+            return true;
+        }
+    return false;
+}
+
+template <class T>
+struct Body {
+    Polar<T> centre;
+    T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
+    std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
+    const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
+};
+
+// The engine's geometry: the exact forms, or the paper's (double only).
+template <class T, bool Paper>
+struct Engine {
+    static Pose<T> move(T K, Pose<T> p, T d) { return geo::move(K, p, d); }
+    static Polar<T> vertex(T K, Polar<T> c, T facing, Polar<T> local) {
+        return geo::vertex_position(K, c, facing, local);
+    }
+    template <class Out>
+    static void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
+        geo::edge_points(K, p, q, n, out);
+    }
+};
+template <>
+struct Engine<double, true> {
+    static Pose<double> move(double K, Pose<double> p, double d) { return geo::paper::move(K, p, d); }
+    static Polar<double> vertex(double K, Polar<double> c, double facing, Polar<double> local) {
+        return geo::paper::vertex_position(K, c, facing, local);
+    }
+    template <class Out>
+    static void edge_points(double K, Polar<double> p, Polar<double> q, int n, Out&& out) {
+        out(0, p);
+        for (int k = 1; k < n; ++k) out(k, geo::paper::edge_point(K, p, q, static_cast<double>(k) / n));
+        out(n, q);
+    }
+};
+
+template <class T, bool Paper = false>
+class World {
+    static_assert(!Paper || std::is_same_v<T, double>, "the paper's formulas are double only");
+
+public:
+    using scalar = T;
+    using engine = Engine<T, Paper>;
+
+    explicit World(const Scene& scene) : scene_(scene) {
+        K = T(scene_.curvature);
+        R = T(scene_.limit_radius);
+        for (const SceneBody& sb : scene_.bodies) bodies.push_back(make_body(sb));
+        // desc pointers refer to scene_ (a copy we own): fix them up after the copy above.
+        for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
+        initial_ = bodies;
+        initial_K_ = K;
+    }
+    World(const World& o) : scene_(o.scene_) { copy_from(o); }
+    World& operator=(const World& o) {
+        if (this != &o) {
+            scene_ = o.scene_;
+            copy_from(o);
+        }
+        return *this;
+    }
+
+    T K{}, R{};
+    double time = 0;  // seconds simulated
+    long frame = 0;   // steps taken
+    std::vector<Body<T>> bodies;
+
+    const Scene& scene() const { return scene_; }
+    bool held(Action a) const { return held_[static_cast<int>(a)]; }
+
+    void press(Action a) {
+        held_[static_cast<int>(a)] = true;
+        if (a == Action::next_preset) next_preset();
+        if (a == Action::reset) reset();
+    }
+    void release(Action a) { held_[static_cast<int>(a)] = false; }
+
+    void step(T dt) {
+        using geo::dot2, geo::hypot, geo::wrap_pi;  // and fx:: ones by ADL for fixed
+        using std::atan2, std::cos, std::sin;
+        const int dk = held(Action::curvature_up) - held(Action::curvature_down);
+        if (dk != 0) K = clamp_k(K + T(scene_.curvature_rate) * dt * T(dk));
+        if (scene_.sweep_rate != 0) {
+            K = K + T(scene_.sweep_rate) * dt * T(sweep_dir_);
+            if (K >= T(1)) K = T(1), sweep_dir_ = -1;
+            if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
+        }
+        const T thrust(scene_.thrust);
+        const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
+        for (Body<T>& b : bodies) {
+            T a = b.accel, adir = b.accel_dir;
+            if (b.desc->controlled && held(Action::thrust)) a = thrust, adir = b.facing;
+            if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
+                const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
+                const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
+                b.speed = hypot(vx, vy);
+                if (b.speed != T(0)) b.travel = atan2(vy, vx);
+            }
+            if (b.speed != T(0)) {
+                const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, b.speed * dt);
+                b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
+                b.centre = p.centre;
+                b.travel = p.travel;
+                b.facing = p.facing;
+            }
+            const T spin = b.desc->controlled ? b.spin + turn : b.spin;
+            if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
+            if (b.centre.r > R) {  // the limit circle
+                const T r = T(2) * R - b.centre.r;
+                b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
+            }
+        }
+        time += static_cast<double>(dt);
+        ++frame;
+    }
+
+    // The next of the scene's presets above the current K (cycling).
+    void next_preset() {
+        const std::vector<double>& p = scene_.presets;
+        if (p.empty()) return;
+        const double k = static_cast<double>(K);
+        for (double v : p)
+            if (v > k + 1e-9) {
+                K = T(v);
+                return;
+            }
+        K = T(p.front());
+    }
+    void reset() {
+        bodies = initial_;
+        K = initial_K_;
+        sweep_dir_ = 1;
+    }
+
+    // The body's vertices in global polar coordinates.
+    void vertices(const Body<T>& b, Polar<T>* out) const {
+        for (std::size_t i = 0; i < b.local.size(); ++i) out[i] = engine::vertex(K, b.centre, b.facing, b.local[i]);
+    }
+
+private:
+    static constexpr double kDegree = 3.14159265358979323846 / 180;
+    static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
+    Body<T> make_body(const SceneBody& sb) const {
+        Body<T> b;
+        b.centre = {T(sb.r), geo::wrap_pi(T(sb.theta_deg * kDegree))};
+        b.facing = geo::wrap_pi(T(sb.facing_deg * kDegree));
+        b.speed = T(sb.speed);
+        b.travel = geo::wrap_pi(T(sb.direction_deg * kDegree));
+        b.accel = T(sb.accel);
+        b.accel_dir = geo::wrap_pi(T(sb.accel_direction_deg * kDegree));
+        b.spin = T(sb.spin_deg * kDegree);
+        for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
+        return b;
+    }
+    void copy_from(const World& o) {
+        K = o.K, R = o.R, time = o.time, frame = o.frame;
+        bodies = o.bodies;
+        initial_ = o.initial_;
+        initial_K_ = o.initial_K_;
+        sweep_dir_ = o.sweep_dir_;
+        for (int i = 0; i < kActionCount; ++i) held_[i] = o.held_[i];
+        for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
+    }
+
+    Scene scene_;
+    std::vector<Body<T>> initial_;
+    T initial_K_{};
+    int sweep_dir_ = 1;
+    bool held_[kActionCount] = {};
+};
+
+}  // namespace noneuclid::world
