@@ -147,26 +147,30 @@ Walk<T> walk(T K, Polar<T> p, T heading, T b) {
     // back by delta: a small angle computed directly, so a straight path does not drift by a
     // rounding of sin/cos/atan2 at every step (in the flat plane the turn is exactly 0).
     T X, Y;  // the direction of T' in the frame rotated so that p lies on +x
-    if (s > T(1)) {
-        // Far from O: split T' into the end's outward radial e_r and e_theta, with the end's
-        // bearing D (cos D = qx/s, sin D = qy/s):
+    if (s <= T(24) && qw >= T(0)) {
+        // T' split into the end's outward radial and tangential parts (alpha, beta), turned by
+        // the end's bearing D, in closed form: D cancels, and with 1 - C = K S^2 / (1 + C),
+        // times (1 + C) > 0,
+        //   X = (1 + C) (T'_x - T'_w qx) - K qx (T'_x qx + T'_y qy)
+        //   Y = (1 + C) (T'_y - T'_w qy) - K qy (T'_x qx + T'_y qy)
+        // No division, exact at O, and exactly no turn on a flat straight path. (Products
+        // stay below 10^4 for S <= 24: r <= 3.9 at K = -1, far past the limit circle; and
+        // 1 + C stays >= 1 while C >= 0, i.e. away from the sphere's antipode.)
+        const T c1 = T(1) + qw;
+        const T along = dot2(tx, qx, ty, qy);
+        X = dot2(c1, tx - tw * qx, -K * qx, along);
+        Y = dot2(c1, ty - tw * qy, -K * qy, along);
+    } else {
+        // Far out in hyperbolic space the products above would overflow Q16.16, and on the
+        // sphere's far hemisphere 1 + C goes to 0: split T' with the unit bearing
+        // (cos D, sin D) = (qx, qy) / s instead:
         //   alpha = C (T'_x cos D + T'_y sin D) - S T'_w,   beta = T'_y cos D - T'_x sin D
-        // (no division by K or by C: C^2 + K S^2 = 1); (X, Y) is (alpha, beta) rotated by D.
+        // (no division by K or by C: C^2 + K S^2 = 1), and (X, Y) = (alpha, beta) turned by D.
         const T cD = qx / s, sD = qy / s;
         const T alpha = dot2(qw, dot2(tx, cD, ty, sD), -s, tw);
         const T beta = dot2(ty, cD, -tx, sD);
         X = dot2(alpha, cD, -beta, sD);
         Y = dot2(alpha, sD, beta, cD);
-    } else {
-        // Near O the end's bearing D is ill-conditioned, so the rotation by D is done in closed
-        // form: with 1 - C = K S^2 / (1 + C), and times (1 + C) > 0,
-        //   X = (1 + C) (T'_x - T'_w qx) - K qx (T'_x qx + T'_y qy)
-        //   Y = (1 + C) (T'_y - T'_w qy) - K qy (T'_x qx + T'_y qy)
-        // No division, exact at O, no noise from D.
-        const T c1 = T(1) + qw;
-        const T along = dot2(tx, qx, ty, qy);
-        X = dot2(c1, tx - tw * qx, -K * qx, along);
-        Y = dot2(c1, ty - tw * qy, -K * qy, along);
     }
     out.turn = atan2(dot2(Y, cd, -X, sd), dot2(X, cd, Y, sd));
     out.heading = wrap_pi(heading + out.turn);

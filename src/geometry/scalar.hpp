@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 
 #include "fixed/math.hpp"
@@ -78,6 +79,10 @@ inline double mul_ASf(double x, double u) { return x * ASf(u); }
 inline float mul_ASf(float x, float u) { return x * ASf(u); }
 inline double mul_ATf(double x, double u) { return x * ATf(u); }
 inline float mul_ATf(float x, float u) { return x * ATf(u); }
+
+// a b; fx::mul_carry carries the rounding to the next call (floating point needs no carry).
+inline double mul_carry(double a, double b, int64_t&) { return a * b; }
+inline float mul_carry(float a, float b, int64_t&) { return a * b; }
 
 // a b + c d; fx::dot2 rounds once.
 inline double dot2(double a, double b, double c, double d) { return a * b + c * d; }

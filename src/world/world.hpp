@@ -56,6 +56,7 @@ struct Body {
     Polar<T> centre;
     T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
+    int64_t step_carry = 0;       // what speed * dt rounding left over (fixed point)
     const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
 };
 
@@ -127,7 +128,7 @@ public:
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 
     void step(T dt) {
-        using geo::dot2, geo::hypot, geo::wrap_pi;  // and fx:: ones by ADL for fixed
+        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
         using std::atan2, std::cos, std::sin;
         const int dk = held(Action::curvature_up) - held(Action::curvature_down);
         if (dk != 0) K = clamp_k(K + T(scene_.curvature_rate) * dt * T(dk));
@@ -148,7 +149,8 @@ public:
                 if (b.speed != T(0)) b.travel = atan2(vy, vx);
             }
             if (b.speed != T(0)) {
-                const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, b.speed * dt);
+                const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
+                const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
                 b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
                 b.centre = p.centre;
                 b.travel = p.travel;
