@@ -18,7 +18,7 @@ set(CMAKE_C_COMPILER ${NONEUCLID_TARGET_TRIPLE}-gcc)    # only for C code pulled
 set(CMAKE_CXX_COMPILER ${NONEUCLID_TARGET_TRIPLE}-g++)
 
 set(CMAKE_C_FLAGS_INIT "-mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard")
-set(CMAKE_CXX_FLAGS_INIT "-mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard")
+set(CMAKE_CXX_FLAGS_INIT "-mcpu=cortex-a53 -mfpu=neon-fp-armv8 -mfloat-abi=hard -Wno-psabi")  # psabi: notes about a GCC 7.1 ABI change, not ours
 
 # Libraries, headers and CMake packages come from the target sysroot only; programs
 # (tools run at build time) from the host.

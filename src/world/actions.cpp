@@ -8,7 +8,9 @@
 namespace noneuclid::world {
 
 std::string ActionError::to_string() const {
-    return file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + message;
+    std::string s = file;
+    if (line > 0) s.append(1, ':').append(std::to_string(line));
+    return s.append(": ").append(message);
 }
 
 bool parse_actions(const std::string& text, const std::string& name, std::vector<ActionEvent>& out, ActionError& error) {

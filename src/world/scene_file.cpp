@@ -32,7 +32,12 @@ const char* type_name(const toml::node& n) {
     }
 }
 
-std::string quote(std::string_view s) { return "'" + std::string(s) + "'"; }
+std::string quote(std::string_view s) {
+    std::string q;  // (built with append: GCC 12 warns falsely on "'" + std::string(s))
+    q.reserve(s.size() + 2);
+    q.append(1, '\'').append(s).append(1, '\'');
+    return q;
+}
 
 class Reader {
 public:
