@@ -443,8 +443,8 @@ TEST(LongRun, AMillionStepsOfTheKioskCoasting) {
         s.curvature = K;
         World<fixed> w(s);
         World<double> wd(s);
-        std::vector<fixed> speed;
-        for (const Body<fixed>& b : w.bodies) speed.push_back(b.speed);
+        std::vector<fixed> speed, travel;
+        for (const Body<fixed>& b : w.bodies) speed.push_back(b.speed), travel.push_back(b.travel);
         const long steps = K == 0 ? 1000000 : 200000;
         double worst_drift = 0;
         for (long i = 1; i <= steps; ++i) {
@@ -463,6 +463,9 @@ TEST(LongRun, AMillionStepsOfTheKioskCoasting) {
             EXPECT_LE(b.centre.r, w.R) << b.desc->name;
             EXPECT_GE(b.centre.r, fixed(0)) << b.desc->name;
             EXPECT_EQ(b.speed, speed[i]) << b.desc->name << ": coasting keeps the speed exactly";
+            if (K == 0) {
+                EXPECT_EQ(b.travel, travel[i]) << b.desc->name << ": a flat straight path never turns";
+            }
             EXPECT_LE(fx_abs(b.facing), kPi + 1e-4) << b.desc->name;
         }
         // The fixed-vs-double distance is reported, not asserted: it is the sum of each step's
