@@ -1,0 +1,68 @@
+// The CPU line rasteriser: writes straight into a Canvas (a RAM back buffer or the
+// framebuffer itself).
+//
+// Coordinates are sub-pixel fixed point, 1/256 px (`SubPoint`, int32: +-8 million px).
+// Pixel (i, j) covers [i, i+1) x [j, j+1); its centre is (i + 1/2, j + 1/2).
+//
+// - Clipping: Liang-Barsky against the canvas grown by 2 px, in double, once per line; the
+//   per-pixel loop then runs only over the visible part, and every write is also checked, so
+//   nothing is ever written outside the canvas (huge or infinite-looking coordinates included).
+//   A line whose end points both lie inside is never altered by clipping.
+// - Aliased lines (Bresenham with sub-pixel end points): along the major axis, every pixel
+//   whose centre coordinate lies in [start, end) (the start included, the end excluded), the
+//   pixel containing the exact line's point there. Integer error term, no division per pixel.
+// - Anti-aliased lines: the line as a band `width` px wide; in each major-axis column the
+//   band covers an interval of the minor axis (width * length / major extent long) and each
+//   pixel gets the exact overlap as its coverage (area sampling along the minor axis; Wu's
+//   algorithm is the special case of a fixed unit interval). Coverage along a line sums to
+//   its length times its width. Blended in 8-bit per channel, in any pixel format.
+// - Thick aliased lines: the same band, filling the pixels whose centre it covers.
+// - Polylines do not plot a shared end point twice: each segment is half-open, and the last
+//   point of an open polyline is plotted once at the end.
+#pragma once
+
+#include <cstdint>
+
+#include "render/canvas.hpp"
+
+namespace noneuclid::render {
+
+struct SubPoint {
+    int32_t x = 0, y = 0;  // 1/256 px
+};
+inline constexpr int kSubBits = 8;
+inline constexpr int32_t kSub = 1 << kSubBits;
+
+// From double pixels, saturating at +-2^22 px (far beyond any canvas; clipping keeps the
+// direction exact enough there) and mapping NaN to a point far outside.
+SubPoint to_sub(double x, double y);
+// From Q16.16 pixels (the fixed-point engine's screen points).
+constexpr SubPoint to_sub_q16(int32_t x_raw, int32_t y_raw) { return {x_raw >> 8, y_raw >> 8}; }
+
+using PixelVisitor = void (*)(int x, int y, int alpha, void* context);
+
+struct LineStyle {
+    bool antialias = false;
+    int32_t width = kSub;  // 1/256 px; 256 = one pixel
+};
+
+// One segment from a to b. `plot_end` adds the end point's own pixel (the half-open rule
+// leaves it out, which is what polylines want).
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_end = true);
+
+// A polyline through n points (closed: back to the first), no pixel of a shared end point
+// plotted twice.
+void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style = {});
+
+// The same polyline on a width x height grid, each pixel handed to `visit` (x, y, coverage
+// 0..255) instead of written: what draw_polyline would write, for tests and tools.
+using PixelVisitor = void (*)(int x, int y, int alpha, void* context);
+void visit_polyline(int width, int height, const SubPoint* points, int n, bool closed, LineStyle style,
+                    PixelVisitor visit, void* context);
+
+// Every pixel whose centre lies outside the circle (cx, cy, r), in px, set to `shade` (the
+// shaded area outside the limit circle in the paper's figures). With `blend_alpha` < 255 the
+// shade is blended instead.
+void shade_outside_circle(const Canvas& c, double cx, double cy, double r, Rgb shade, int blend_alpha = 255);
+
+}  // namespace noneuclid::render

@@ -1,0 +1,271 @@
+// The rasteriser: every pixel of aliased lines against an independent reference, coverage of
+// anti-aliased lines, clipping with canary borders and odd strides in every pixel format,
+// lines far off the canvas, pixel formats, polylines, the shaded outside of the limit circle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "render/raster.hpp"
+
+using namespace noneuclid::render;
+
+namespace {
+
+const PixelFormat kFormats[] = {PixelFormat::rgb565(), PixelFormat::bgr565(), PixelFormat::xrgb8888(),
+                                PixelFormat::xbgr8888(), PixelFormat::rgb888(), PixelFormat::bgr888()};
+
+// A buffer with a canary border: `pad` canary rows above and below, `pad` canary pixels left
+// and right of each row, and an odd number of spare bytes at the end of each row (stride).
+struct Guarded {
+    int w, h, pad;
+    PixelFormat f;
+    std::ptrdiff_t stride;
+    std::vector<uint8_t> bytes;
+    static constexpr uint8_t kCanary = 0xA5;
+    Guarded(int w_, int h_, PixelFormat f_, int pad_ = 3) : w(w_), h(h_), pad(pad_), f(f_) {
+        stride = static_cast<std::ptrdiff_t>((w + 2 * pad) * f.bytes_per_pixel() + 3);  // odd
+        bytes.assign(static_cast<std::size_t>(stride * (h + 2 * pad)), kCanary);
+        Canvas c = canvas();
+        c.clear({0, 0, 0});
+    }
+    Canvas canvas() { return Canvas(bytes.data() + pad * stride + pad * f.bytes_per_pixel(), w, h, stride, f); }
+    // True if every byte outside the canvas still holds the canary.
+    bool canary_intact() const {
+        const int bpp = f.bytes_per_pixel();
+        for (std::ptrdiff_t i = 0; i < static_cast<std::ptrdiff_t>(bytes.size()); ++i) {
+            const std::ptrdiff_t row = i / stride, col = i % stride;
+            const bool in_rows = row >= pad && row < pad + h;
+            const bool in_cols = col >= pad * bpp && col < (pad + w) * bpp;
+            if (in_rows && in_cols) continue;
+            if (bytes[static_cast<std::size_t>(i)] != kCanary) return false;
+        }
+        return true;
+    }
+};
+
+std::set<std::pair<int, int>> lit(const Canvas& c) {
+    std::set<std::pair<int, int>> s;
+    for (int y = 0; y < c.height(); ++y)
+        for (int x = 0; x < c.width(); ++x)
+            if (c.get_word(x, y) != 0) s.insert({x, y});
+    return s;
+}
+
+// The reference for an aliased line: along the major axis, each pixel whose centre coordinate
+// lies in [start, end), the pixel containing the exact line point there (computed in long
+// double, rounded down), plus the pixel containing the end point.
+std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int h) {
+    std::set<std::pair<int, int>> s;
+    const long double x0 = a.x / 256.0L, y0 = a.y / 256.0L, x1 = b.x / 256.0L, y1 = b.y / 256.0L;
+    const bool xm = std::fabs(x1 - x0) >= std::fabs(y1 - y0);
+    const long double u0 = xm ? x0 : y0, u1 = xm ? x1 : y1, v0 = xm ? y0 : x0, v1 = xm ? y1 : x1;
+    auto add = [&](long long x, long long y) {
+        if (x >= 0 && y >= 0 && x < w && y < h) s.insert({static_cast<int>(x), static_cast<int>(y)});
+    };
+    if (u0 != u1) {
+        for (long long i = static_cast<long long>(std::floor(std::fmin(u0, u1))) - 1; i <= std::ceil(std::fmax(u0, u1)) + 1; ++i) {
+            const long double c = i + 0.5L;
+            const bool in = u1 > u0 ? (c >= u0 && c < u1) : (c <= u0 && c > u1);
+            if (!in) continue;
+            const long double v = v0 + (c - u0) * (v1 - v0) / (u1 - u0);
+            const long long j = static_cast<long long>(std::floor(v));
+            xm ? add(i, j) : add(j, i);
+        }
+    }
+    add(static_cast<long long>(std::floor(x1)), static_cast<long long>(std::floor(y1)));
+    return s;
+}
+
+TEST(Raster, AliasedLinesMatchTheReferencePixelForPixel) {
+    std::mt19937 rng(1);
+    std::uniform_int_distribution<int32_t> cx(0, 64 * 256 - 1), cy(0, 48 * 256 - 1);
+    std::vector<uint32_t> buf(64 * 48);
+    int lines = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const SubPoint a{cx(rng), cy(rng)}, b{k % 10 == 0 ? a.x : cx(rng), k % 10 == 1 ? a.y : cy(rng)};
+        std::fill(buf.begin(), buf.end(), 0);
+        Canvas c(buf.data(), 64, 48, 64 * 4, PixelFormat::xrgb8888());
+        draw_line(c, a, b, {255, 255, 255});
+        const auto want = reference_line(a, b, 64, 48);
+        // A column centre exactly on a pixel boundary in v is a tie both sides resolve by
+        // rounding down, exactly; long double holds these coordinates exactly.
+        ASSERT_EQ(lit(c), want) << "line (" << a.x << "," << a.y << ") -> (" << b.x << "," << b.y << ") / 256";
+        ++lines;
+    }
+    EXPECT_EQ(lines, 20000);
+}
+
+TEST(Raster, AntiAliasedCoverageSumsToLengthTimesWidth) {
+    std::mt19937 rng(2);
+    std::uniform_real_distribution<double> px(10, 190);
+    std::vector<uint32_t> buf(200 * 200);
+    for (int k = 0; k < 2000; ++k) {
+        const double x0 = px(rng), y0 = px(rng), x1 = px(rng), y1 = px(rng);
+        const double width = (k % 3 == 0) ? 2.5 : 1.0;
+        std::fill(buf.begin(), buf.end(), 0);
+        Canvas c(buf.data(), 200, 200, 200 * 4, PixelFormat::xrgb8888());
+        const SubPoint a = to_sub(x0, y0), b = to_sub(x1, y1);
+        draw_line(c, a, b, {255, 255, 255}, {true, static_cast<int32_t>(width * 256)});
+        double sum = 0;
+        for (uint32_t w : buf) sum += (w & 0xFF) / 255.0;
+        const double L = std::hypot((b.x - a.x) / 256.0, (b.y - a.y) / 256.0);
+        const double major = std::fmax(std::fabs(b.x - a.x), std::fabs(b.y - a.y)) / 256.0;
+        // The band covers the whole columns from start to end: up to one column (L/major * width)
+        // more or less than the exact length, plus half an 8-bit step per pixel written.
+        const double per_column = width * L / std::fmax(major, 1e-9);
+        EXPECT_NEAR(sum, L * width, per_column + 3 * major * 0.5 / 255 + 1e-9) << k;
+    }
+}
+
+TEST(Raster, ClippingNeverWritesOutsideInAnyFormatOrStride) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> far(-3000, 3000), huge(-1e12, 1e12);
+    for (const PixelFormat& f : kFormats) {
+        Guarded g(37, 23, f);  // odd sizes, odd stride
+        const Canvas c = g.canvas();
+        for (int k = 0; k < 3000; ++k) {
+            const bool h = k % 5 == 0;
+            const SubPoint a = to_sub(h ? huge(rng) : far(rng), h ? huge(rng) : far(rng));
+            const SubPoint b = to_sub(k % 7 == 0 ? 18.5 : far(rng), far(rng));
+            const LineStyle style{k % 2 == 1, k % 3 == 0 ? 1200 : 256};
+            draw_line(c, a, b, {255, 128, 7}, style);
+        }
+        const SubPoint loop[] = {to_sub(-5, -5), to_sub(50, 10), to_sub(10, 40), to_sub(36.9, 22.9)};
+        draw_polyline(c, loop, 4, true, {1, 2, 3});
+        shade_outside_circle(c, 18, 11, 10, {9, 9, 9});
+        EXPECT_TRUE(g.canary_intact()) << f.name;
+        EXPECT_FALSE(lit(c).empty()) << f.name << ": something was drawn";
+    }
+}
+
+TEST(Raster, LinesOffTheCanvasOrWithHugeCoordinatesWriteNothing) {
+    Guarded g(40, 30, PixelFormat::rgb565());
+    const Canvas c = g.canvas();
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const std::pair<SubPoint, SubPoint> lines[] = {
+        {to_sub(-100, -100), to_sub(-1, 500)},       // left of the canvas
+        {to_sub(45, -10), to_sub(1e9, 1e9)},          // right
+        {to_sub(-1e300, 5), to_sub(-1e300, 20)},      // absurdly far
+        {to_sub(nan, 3), to_sub(5, nan)},             // NaN maps far outside
+        {to_sub(-inf, -inf), to_sub(-inf, 1e6)},
+        {to_sub(0, -3), to_sub(39.9, -1.6)},          // just above (a 1-px band ends at -1.1)
+    };
+    for (const auto& [a, b] : lines) {
+        draw_line(c, a, b, {255, 255, 255});
+        draw_line(c, a, b, {255, 255, 255}, {true, 256});
+        if (a.y != to_sub(0, -3).y) draw_line(c, a, b, {255, 255, 255}, {false, 2000});  // 7.8 px wide
+    }
+    EXPECT_TRUE(lit(c).empty());
+    EXPECT_TRUE(g.canary_intact());
+    // A line across with both ends absurdly far: only its visible part is drawn, in time.
+    draw_line(c, to_sub(-1e12, 15.5), to_sub(1e12, 15.5), {255, 255, 255});
+    EXPECT_EQ(lit(c).size(), 40u);
+    EXPECT_TRUE(g.canary_intact());
+}
+
+TEST(Raster, PixelFormatsRoundTrip) {
+    for (const PixelFormat& f : kFormats) {
+        ASSERT_TRUE(f.supported()) << f.name;
+        for (int v = 0; v < 256; ++v) {
+            const Rgb c{static_cast<uint8_t>(v), static_cast<uint8_t>(255 - v), static_cast<uint8_t>(v * 7)};
+            const Rgb back = f.unpack(f.pack(c));
+            auto expect = [](uint8_t x, int len) {  // top bits kept, replicated downward
+                int keep = x >> (8 - len) << (8 - len), out = keep;
+                for (int filled = len; filled < 8; filled += len) out |= out >> filled;
+                return static_cast<uint8_t>(out);
+            };
+            EXPECT_EQ(back.r, expect(c.r, f.red.length)) << f.name << " " << v;
+            EXPECT_EQ(back.g, expect(c.g, f.green.length)) << f.name << " " << v;
+            EXPECT_EQ(back.b, expect(c.b, f.blue.length)) << f.name << " " << v;
+        }
+        // Every word of the 16-bit formats survives unpack then pack.
+        if (f.bits_per_pixel == 16) {
+            for (uint32_t w = 0; w < 65536; ++w) ASSERT_EQ(f.pack(f.unpack(w)), w) << f.name;
+        }
+        EXPECT_EQ(f.unpack(f.pack({255, 255, 255})), (Rgb{255, 255, 255})) << f.name;
+    }
+    // The memory layout fbdev describes: xrgb8888 blue first in memory, rgb888 too, rgb565
+    // red in the top bits of a little-endian 16-bit word.
+    uint8_t px[4] = {};
+    Canvas(px, 1, 1, 4, PixelFormat::xrgb8888()).set(0, 0, {0x11, 0x22, 0x33});
+    EXPECT_EQ(px[0], 0x33);
+    EXPECT_EQ(px[2], 0x11);
+    Canvas(px, 1, 1, 3, PixelFormat::rgb888()).set(0, 0, {0x44, 0x55, 0x66});
+    EXPECT_EQ(px[0], 0x66);
+    EXPECT_EQ(px[2], 0x44);
+    Canvas(px, 1, 1, 2, PixelFormat::rgb565()).set(0, 0, {0xFF, 0, 0});
+    EXPECT_EQ(px[1], 0xF8);
+    EXPECT_EQ(px[0], 0x00);
+}
+
+TEST(Raster, BlendingIsCorrectInEveryFormat) {
+    for (const PixelFormat& f : kFormats) {
+        uint8_t px[4] = {};
+        Canvas c(px, 1, 1, 4, f);
+        c.set(0, 0, {0, 0, 0});
+        c.blend(0, 0, {255, 255, 255}, 128);  // half of white over black
+        const Rgb got = c.get(0, 0);
+        // the 8-bit result 128 stored in the format: within one step of the channel
+        auto step = [](int len) { return 256 >> len; };
+        EXPECT_NEAR(got.r, 128, step(f.red.length)) << f.name;
+        EXPECT_NEAR(got.g, 128, step(f.green.length)) << f.name;
+        EXPECT_NEAR(got.b, 128, step(f.blue.length)) << f.name;
+        c.blend(0, 0, {10, 20, 30}, 255);
+        EXPECT_EQ(c.get(0, 0), f.unpack(f.pack({10, 20, 30}))) << f.name;
+    }
+}
+
+void count_visit(int x, int y, int, void* ctx) { (*static_cast<std::map<std::pair<int, int>, int>*>(ctx))[{x, y}]++; }
+
+TEST(Raster, PolylinesPlotSharedPointsOnce) {
+    // Polylines that never come back over themselves (x increasing by >= 3 px per point, any
+    // slope): the pixel of every shared point is visited at most once. (Two segments meeting at
+    // an acute angle may still both cross a pixel next to their shared point: that is their
+    // geometry, not the shared point.)
+    std::mt19937 rng(4);
+    std::uniform_real_distribution<double> py(0, 60), step(3, 12);
+    for (int k = 0; k < 500; ++k) {
+        SubPoint pts[6];
+        double x = step(rng) - 2;
+        for (SubPoint& p : pts) p = to_sub(x, py(rng)), x += step(rng);
+        std::map<std::pair<int, int>, int> counts;
+        visit_polyline(64, 64, pts, 6, false, {}, count_visit, &counts);
+        for (int i = 1; i < 6; ++i) {
+            const std::pair<int, int> v{pts[i].x >> 8, pts[i].y >> 8};
+            const auto it = counts.find(v);  // (the half-open rule may leave it to a neighbour)
+            ASSERT_LE(it == counts.end() ? 0 : it->second, 1) << "polyline " << k << " point " << i;
+        }
+    }
+    // A closed square: 4 segments, every pixel of its outline exactly once.
+    const SubPoint sq[] = {to_sub(10.5, 10.5), to_sub(20.5, 10.5), to_sub(20.5, 20.5), to_sub(10.5, 20.5)};
+    std::map<std::pair<int, int>, int> counts;
+    visit_polyline(64, 64, sq, 4, true, {}, count_visit, &counts);
+    EXPECT_EQ(counts.size(), 40u);
+    for (const auto& [p, n] : counts) EXPECT_EQ(n, 1);
+}
+
+TEST(Raster, ThickLinesAndTheShadedOutside) {
+    std::vector<uint32_t> buf(40 * 30, 0);
+    Canvas c(buf.data(), 40, 30, 40 * 4, PixelFormat::xrgb8888());
+    draw_line(c, to_sub(5, 10.5), to_sub(30, 10.5), {255, 255, 255}, {false, 3 * 256});
+    std::set<int> rows;
+    for (auto [x, y] : lit(c)) rows.insert(y);
+    EXPECT_EQ(rows, (std::set<int>{9, 10, 11}));
+    std::fill(buf.begin(), buf.end(), 0);
+    shade_outside_circle(c, 20, 15, 12.3, {255, 255, 255});
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 40; ++x) {
+            const bool outside = std::hypot(x + 0.5 - 20, y + 0.5 - 15) >= 12.3;
+            EXPECT_EQ(c.get_word(x, y) != 0, outside) << x << "," << y;
+        }
+}
+
+}  // namespace
