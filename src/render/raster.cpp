@@ -1,20 +1,64 @@
 #include "render/raster.hpp"
 
+#include <bit>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 
 namespace noneuclid::render {
 namespace {
 
-// Where pixels go: into a canvas, or to a visitor (tests, counting).
+static_assert(std::endian::native == std::endian::little, "pixel words are stored little-endian");
+
+// Where pixels go: into a canvas (one instantiation per pixel size, writing whole words, with
+// integer blends for the two fast formats), or to a visitor (tests, counting).
+template <int Bpp>
 struct CanvasSink {
     const Canvas& c;
     Rgb color;
     uint32_t word;
+    uint8_t* base;
+    std::ptrdiff_t stride;
+    bool fast565, fast8888;
+    CanvasSink(const Canvas& canvas, Rgb col)
+        : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
+          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().is_xrgb8888()) {}
     int width() const { return c.width(); }
     int height() const { return c.height(); }
-    void opaque(int x, int y) const { c.set_word(x, y, word); }
-    void blend(int x, int y, int alpha) const { c.blend(x, y, color, alpha); }
+    uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
+    void opaque(int x, int y) const {
+        uint8_t* p = at(x, y);
+        if constexpr (Bpp == 4) {
+            std::memcpy(p, &word, 4);
+        } else if constexpr (Bpp == 2) {
+            const uint16_t w = static_cast<uint16_t>(word);
+            std::memcpy(p, &w, 2);
+        } else {
+            p[0] = static_cast<uint8_t>(word), p[1] = static_cast<uint8_t>(word >> 8), p[2] = static_cast<uint8_t>(word >> 16);
+        }
+    }
+    // dst + (src - dst) * a / 255 per channel; a / 255 as (a * 257 + 128) >> 16 over 8-bit values.
+    static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
+        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d);
+        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((diff * static_cast<int32_t>(a) * 257 + (diff >= 0 ? 32768 : -32768)) >> 16));
+    }
+    void blend(int x, int y, int alpha) const {
+        if (alpha >= 255) return opaque(x, y);
+        if constexpr (Bpp == 4) {
+            if (fast8888) {
+                uint8_t* p = at(x, y);
+                uint32_t d;
+                std::memcpy(&d, p, 4);
+                const uint32_t a = static_cast<uint32_t>(alpha);
+                const uint32_t r = mix8(color.r, (d >> 16) & 0xFF, a), g = mix8(color.g, (d >> 8) & 0xFF, a),
+                               b = mix8(color.b, d & 0xFF, a);
+                const uint32_t out = (d & 0xFF000000u) | r << 16 | g << 8 | b;
+                std::memcpy(p, &out, 4);
+                return;
+            }
+        }
+        c.blend(x, y, color, alpha);
+    }
 };
 struct VisitSink {
     int w, h;
@@ -45,6 +89,15 @@ struct Plotter {
         const int64_t x = swap ? v : u, y = swap ? u : v;
         if (!inside(x, y)) return;
         sink.blend(static_cast<int>(x), static_cast<int>(y), alpha);
+    }
+    // A pixel known to be on the canvas, with no shared-point check (the loop's inner pixels).
+    void raw(int64_t u, int64_t v) const {
+        sink.opaque(static_cast<int>(swap ? v : u), static_cast<int>(swap ? u : v));
+    }
+    // Remember the segment's last pixel for the next segment's shared-point check.
+    void note_last(int64_t u, int64_t v) {
+        const int64_t x = swap ? v : u, y = swap ? u : v;
+        if (inside(x, y)) last_x = static_cast<int>(x), last_y = static_cast<int>(y);
     }
 };
 
@@ -97,8 +150,22 @@ Columns columns(int64_t u0, int64_t u1) {
 template <class P>
 void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     const int64_t du = u1 - u0, dv = v1 - v0;
-    const Columns col = columns(u0, u1);
+    Columns col = columns(u0, u1);
+    // Only the columns on the canvas: along the major axis the range is cut once, here; across
+    // it each pixel is checked (a single unsigned compare).
+    const int64_t umax = p.swap ? p.sink.height() : p.sink.width(), vmax = p.swap ? p.sink.width() : p.sink.height();
     if (col.count == 0) return;
+    int64_t last = col.first + (col.count - 1) * col.step;
+    if (col.step > 0) {
+        if (col.first < 0) col.first = 0;
+        if (last > umax - 1) last = umax - 1;
+        col.count = last - col.first + 1;
+    } else {
+        if (col.first > umax - 1) col.first = umax - 1;
+        if (last < 0) last = 0;
+        col.count = col.first - last + 1;
+    }
+    if (col.count <= 0) return;
     // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0.
     const int64_t sgn = du > 0 ? 1 : -1;
     const int64_t A = kSub * du * sgn;
@@ -107,13 +174,15 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     int64_t row = floor_div(N, A), rem = N - row * A;  // 0 <= rem < A
     const int64_t step = kSub * dv * col.step * sgn;    // |step| <= A
     int64_t u = col.first;
-    for (int64_t k = 0; k < col.count; ++k) {
-        p.opaque(u, row);
+    p.opaque(u, row);  // the first pixel goes through the shared-point check
+    for (int64_t k = 1; k < col.count; ++k) {
         u += col.step;
         rem += step;
         if (rem >= A) rem -= A, ++row;
         else if (rem < 0) rem += A, --row;
+        if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.raw(u, row);
     }
+    p.note_last(u, row);
 }
 
 // The band of the given width around the line, per column: exact coverage (anti-aliased) or
@@ -145,13 +214,18 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
 
 template <class P>
 void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
-    // Clip against the canvas grown by 2 px; end points inside it stay exactly as given.
-    const double m = 2.0 * kSub;
-    double x0 = a.x, y0 = a.y, x1 = b.x, y1 = b.y;
-    const double W = static_cast<double>(p.sink.width()) * kSub, H = static_cast<double>(p.sink.height()) * kSub;
-    const double grow = style.width > kSub ? m + style.width : m;
-    if (!clip(x0, y0, x1, y1, -grow, -grow, W + grow, H + grow)) return;
-    const int64_t X0 = std::llround(x0), Y0 = std::llround(y0), X1 = std::llround(x1), Y1 = std::llround(y1);
+    // Clip against the canvas grown by 2 px; end points inside it stay exactly as given (and
+    // when both are inside, there is nothing to clip: no floating point at all).
+    const int64_t Wi = int64_t{p.sink.width()} * kSub, Hi = int64_t{p.sink.height()} * kSub;
+    int64_t X0 = a.x, Y0 = a.y, X1 = b.x, Y1 = b.y;
+    const bool inside = X0 >= 0 && Y0 >= 0 && X1 >= 0 && Y1 >= 0 && X0 < Wi && X1 < Wi && Y0 < Hi && Y1 < Hi;
+    if (!inside) {
+        const double m = 2.0 * kSub;
+        double x0 = a.x, y0 = a.y, x1 = b.x, y1 = b.y;
+        const double grow = style.width > kSub ? m + style.width : m;
+        if (!clip(x0, y0, x1, y1, -grow, -grow, static_cast<double>(Wi) + grow, static_cast<double>(Hi) + grow)) return;
+        X0 = std::llround(x0), Y0 = std::llround(y0), X1 = std::llround(x1), Y1 = std::llround(y1);
+    }
     const bool x_major = (X1 > X0 ? X1 - X0 : X0 - X1) >= (Y1 > Y0 ? Y1 - Y0 : Y0 - Y1);
     p.swap = !x_major;
     const int64_t u0 = x_major ? X0 : Y0, v0 = x_major ? Y0 : X0, u1 = x_major ? X1 : Y1, v1 = x_major ? Y1 : X1;
@@ -194,15 +268,28 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
 
 SubPoint to_sub(double x, double y) { return to_sub_impl(x, y); }
 
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
-    const CanvasSink sink{c, color, c.format().pack(color)};
-    Plotter<CanvasSink> p{sink};
+template <int Bpp>
+void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+    const CanvasSink<Bpp> sink(c, color);
+    Plotter<CanvasSink<Bpp>> p{sink};
     segment(p, a, b, style);
     if (plot_end) end_point(p, b, style);
 }
 
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+    switch (c.format().bytes_per_pixel()) {
+        case 2: return line_in<2>(c, a, b, color, style, plot_end);
+        case 3: return line_in<3>(c, a, b, color, style, plot_end);
+        default: return line_in<4>(c, a, b, color, style, plot_end);
+    }
+}
+
 void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style) {
-    polyline(CanvasSink{c, color, c.format().pack(color)}, points, n, closed, style);
+    switch (c.format().bytes_per_pixel()) {
+        case 2: return polyline(CanvasSink<2>(c, color), points, n, closed, style);
+        case 3: return polyline(CanvasSink<3>(c, color), points, n, closed, style);
+        default: return polyline(CanvasSink<4>(c, color), points, n, closed, style);
+    }
 }
 
 void visit_polyline(int width, int height, const SubPoint* points, int n, bool closed, LineStyle style,
