@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <type_traits>
 
 namespace noneuclid::render {
 namespace {
@@ -14,6 +15,7 @@ static_assert(std::endian::native == std::endian::little, "pixel words are store
 // integer blends for the two fast formats), or to a visitor (tests, counting).
 template <int Bpp>
 struct CanvasSink {
+    static constexpr int bytes = Bpp;
     const Canvas& c;
     Rgb color;
     uint32_t word;
@@ -26,8 +28,9 @@ struct CanvasSink {
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
-    void opaque(int x, int y) const {
-        uint8_t* p = at(x, y);
+    void opaque(int x, int y) const { store(y * stride + x * Bpp); }
+    void store(std::ptrdiff_t offset) const {
+        uint8_t* p = base + offset;
         if constexpr (Bpp == 4) {
             std::memcpy(p, &word, 4);
         } else if constexpr (Bpp == 2) {
@@ -105,7 +108,6 @@ int64_t floor_div(int64_t a, int64_t b) {  // b > 0
     const int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
-int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }
 
 // Liang-Barsky: clips the segment to [lo, hi] x [lo_y, hi_y]; false if nothing is left.
 bool clip(double& x0, double& y0, double& x1, double& y1, double xmin, double ymin, double xmax, double ymax) {
@@ -138,12 +140,16 @@ bool clip(double& x0, double& y0, double& x1, double& y1, double xmin, double ym
 struct Columns {
     int64_t first, count, step;
 };
+// floor(v / 256) and ceil(v / 256) by arithmetic shifts (C++20: >> of a negative value rounds
+// toward negative infinity).
+int64_t floor_sub(int64_t v) { return v >> kSubBits; }
+int64_t ceil_sub(int64_t v) { return -((-v) >> kSubBits); }
 Columns columns(int64_t u0, int64_t u1) {
     if (u1 > u0) {
-        const int64_t a = ceil_div(u0 - kSub / 2, kSub), b = ceil_div(u1 - kSub / 2, kSub) - 1;
+        const int64_t a = ceil_sub(u0 - kSub / 2), b = ceil_sub(u1 - kSub / 2) - 1;
         return {a, b >= a ? b - a + 1 : 0, 1};
     }
-    const int64_t a = floor_div(u0 - kSub / 2, kSub), b = floor_div(u1 - kSub / 2, kSub) + 1;
+    const int64_t a = floor_sub(u0 - kSub / 2), b = floor_sub(u1 - kSub / 2) + 1;
     return {a, a >= b ? a - b + 1 : 0, -1};
 }
 
@@ -175,12 +181,29 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     const int64_t step = kSub * dv * col.step * sgn;    // |step| <= A
     int64_t u = col.first;
     p.opaque(u, row);  // the first pixel goes through the shared-point check
-    for (int64_t k = 1; k < col.count; ++k) {
-        u += col.step;
-        rem += step;
-        if (rem >= A) rem -= A, ++row;
-        else if (rem < 0) rem += A, --row;
-        if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.raw(u, row);
+    if constexpr (requires { p.sink.base; }) {
+        // Into a canvas: step a byte offset along the major axis and, on a carry, across it.
+        using Sink = std::remove_cvref_t<decltype(p.sink)>;
+        constexpr int bpp = Sink::bytes;
+        const std::ptrdiff_t major = (p.swap ? p.sink.stride : bpp) * col.step;
+        const std::ptrdiff_t minor = p.swap ? bpp : p.sink.stride;
+        std::ptrdiff_t off = p.swap ? u * p.sink.stride + row * bpp : row * p.sink.stride + u * bpp;
+        for (int64_t k = 1; k < col.count; ++k) {
+            off += major;
+            rem += step;
+            if (rem >= A) rem -= A, ++row, off += minor;
+            else if (rem < 0) rem += A, --row, off -= minor;
+            if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.sink.store(off);
+        }
+        u += (col.count - 1) * col.step;
+    } else {
+        for (int64_t k = 1; k < col.count; ++k) {
+            u += col.step;
+            rem += step;
+            if (rem >= A) rem -= A, ++row;
+            else if (rem < 0) rem += A, --row;
+            if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.raw(u, row);
+        }
     }
     p.note_last(u, row);
 }
@@ -240,7 +263,7 @@ template <class P>
 void end_point(P& p, SubPoint e, LineStyle style) {
     if (style.antialias || style.width > kSub) return;  // bands cover their ends
     p.swap = false;
-    p.opaque(floor_div(e.x, kSub), floor_div(e.y, kSub));
+    p.opaque(floor_sub(e.x), floor_sub(e.y));
 }
 
 SubPoint to_sub_impl(double x, double y) {
