@@ -3,6 +3,9 @@
 // Until the renderer lands, the program has one command, `accuracy`, which prints how close
 // the fixed-point lookup-table functions come to the std:: double functions (the same
 // measurement tests/accuracy asserts on). Running with no command prints that report too.
+#if NONEUCLID_HAVE_PNG
+#include "desktop/png_file.hpp"
+#endif
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +16,7 @@
 #include "fixed/accuracy.hpp"
 #include "fixed/tables.hpp"
 #include "geometry/accuracy.hpp"
+#include "render/render_scene.hpp"
 #include "world/actions.hpp"
 #include "world/dump.hpp"
 #include "world/scene_file.hpp"
@@ -37,6 +41,7 @@ void print_help(std::FILE* out) {
                  "                    row misses its asserted bound\n"
                  "  dump              run a scene and write its state as JSON Lines, one line per\n"
                  "                    frame, frame 0 being the initial state\n"
+                 "  render            run a scene and write its last frame as a PNG picture\n"
                  "\n"
                  "options for accuracy:\n"
                  "  --samples N       evenly spaced samples per row (default 262144)\n"
@@ -57,6 +62,14 @@ void print_help(std::FILE* out) {
                  "                    orthographic, lambert\n"
                  "  --bodies N, --vertices N, --tessellation N   the stress scene's size\n"
                  "                    (default 200, 8, 8)\n"
+                 "\n"
+                 "options for render (and the dump options above):\n"
+                 "  --out FILE.png    where to write the picture (required)\n"
+                 "  --format F        the canvas's pixel format: xrgb8888 (default), rgb565, rgb888\n"
+                 "  --aa              anti-aliased lines\n"
+                 "  --width PX        line width in pixels (default 1)\n"
+                 "  --timelapse EVERY lay every EVERY-th frame's bodies over the earlier ones, as in\n"
+                 "                    the paper's figures 14-17\n"
                  "\n"
                  "  -h, --help        show this help\n"
                  "  --version         show the version\n");
@@ -220,6 +233,12 @@ struct DumpArgs {
     std::string actions;
     noneuclid::world::DumpOptions dump;
     noneuclid::world::SceneParams params;
+    // render
+    std::string out;
+    noneuclid::render::PixelFormat format = noneuclid::render::PixelFormat::xrgb8888();
+    bool aa = false;
+    double line_width = 1;
+    long timelapse = 0;
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -256,9 +275,49 @@ int run_dump(const noneuclid::world::Scene& scene, const DumpArgs& a,
     return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
-int dump_command(int argc, char** argv, int i) {
+// Runs the scene and draws its last frame (or, with --timelapse, every EVERY-th frame's bodies
+// over the last frame's grid), then writes the PNG.
+template <class W>
+int run_render(const noneuclid::world::Scene& scene, const DumpArgs& a,
+               const std::vector<noneuclid::world::ActionEvent>& events) {
+    namespace r = noneuclid::render;
+    W world(scene);
+    const int w = a.dump.width, h = a.dump.height;
+    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w) * a.format.bytes_per_pixel();
+    std::vector<uint8_t> pixels(static_cast<std::size_t>(stride) * static_cast<std::size_t>(h));
+    const r::Canvas canvas(pixels.data(), w, h, stride, a.format);
+    r::RenderJob job;
+    job.frames = a.frames;
+    job.dt = a.dt;
+    job.timelapse = a.timelapse;
+    job.draw.projection = a.dump.projection;
+    job.draw.antialias = a.aa;
+    job.draw.line_width = static_cast<int32_t>(a.line_width * r::kSub + 0.5);
+    r::render_scene(world, canvas, job, events);
+#if NONEUCLID_HAVE_PNG
+    std::string error;
+    if (!noneuclid::platform::write_png(a.out, canvas, error)) {
+        std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+        return 1;
+    }
+    std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, %s, K = %.3f, frame %ld)\n", a.out.c_str(), w, h, a.format.name,
+                 static_cast<double>(world.K), world.frame);
+    return 0;
+#else
+    std::fprintf(stderr, "noneuclid: this build has no PNG support (libpng was not found when it was built): "
+                         "install libpng-dev and rebuild.\n");
+    return 1;
+#endif
+}
+
+int world_command(int argc, char** argv, int i, bool render);
+
+int dump_command(int argc, char** argv, int i) { return world_command(argc, argv, i, false); }
+
+int world_command(int argc, char** argv, int i, bool render) {
     using namespace noneuclid::world;
     DumpArgs a;
+    const char* command = render ? "render" : "dump";
     for (; i < argc; ++i) {
         const std::string opt = argv[i];
         auto value = [&]() -> const char* {
@@ -303,10 +362,25 @@ int dump_command(int argc, char** argv, int i) {
             a.params.vertices = static_cast<int>(parse_count("--vertices", value(), 1, 10000));
         } else if (opt == "--tessellation") {
             a.params.tessellation = static_cast<int>(parse_count("--tessellation", value(), 1, 256));
+        } else if (render && opt == "--out") {
+            a.out = value();
+        } else if (render && opt == "--format") {
+            const std::string f = value();
+            if (f == "xrgb8888") a.format = noneuclid::render::PixelFormat::xrgb8888();
+            else if (f == "rgb565") a.format = noneuclid::render::PixelFormat::rgb565();
+            else if (f == "rgb888") a.format = noneuclid::render::PixelFormat::rgb888();
+            else usage_error("--format must be xrgb8888, rgb565 or rgb888, not '" + f + "'.");
+        } else if (render && opt == "--aa") {
+            a.aa = true;
+        } else if (render && opt == "--width") {
+            a.line_width = parse_number("--width", value(), 0.1, 64);
+        } else if (render && opt == "--timelapse") {
+            a.timelapse = static_cast<long>(parse_count("--timelapse", value(), 1, 100000000));
         } else {
-            usage_error("unknown option '" + opt + "' for dump; see 'noneuclid --help'.");
+            usage_error("unknown option '" + opt + "' for " + command + "; see 'noneuclid --help'.");
         }
     }
+    if (render && a.out.empty()) usage_error("render needs --out FILE.png: where to write the picture.");
     Scene scene;
     if (!builtin_scene(a.scene, a.params, scene)) {
         SceneError err;
@@ -330,6 +404,12 @@ int dump_command(int argc, char** argv, int i) {
             return 2;
         }
     }
+    if (render) {
+        if (a.engine == "double") return run_render<World<double>>(scene, a, events);
+        if (a.engine == "float") return run_render<World<float>>(scene, a, events);
+        if (a.engine == "paper") return run_render<World<double, true>>(scene, a, events);
+        return run_render<World<noneuclid::fx::fixed>>(scene, a, events);
+    }
     if (a.engine == "double") return run_dump<World<double>>(scene, a, events);
     if (a.engine == "float") return run_dump<World<float>>(scene, a, events);
     if (a.engine == "paper") return run_dump<World<double, true>>(scene, a, events);
@@ -342,6 +422,7 @@ int main(int argc, char** argv) {
     noneuclid::fx::AccuracyOptions options;
     int i = 1;
     if (i < argc && std::strcmp(argv[i], "dump") == 0) return dump_command(argc, argv, i + 1);
+    if (i < argc && std::strcmp(argv[i], "render") == 0) return world_command(argc, argv, i + 1, true);
     if (i < argc && std::strcmp(argv[i], "accuracy") == 0) ++i;
     for (; i < argc; ++i) {
         const char* a = argv[i];

@@ -1,0 +1,40 @@
+// Console fonts from files: PSF1/PSF2, plain or gzip-compressed (.psf, .psf.gz, .psfu.gz), as
+// Debian ships them in /usr/share/consolefonts (package console-setup-linux), and the choice of
+// the HUD's font.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/font.hpp"
+
+namespace noneuclid::platform {
+
+// A font together with the bytes it points into. Move-only: font.glyphs points into bytes
+// (a moved vector keeps its buffer, a copied one would not). For the built-in font, bytes is
+// empty and font points at constant data.
+struct LoadedFont {
+    std::vector<uint8_t> bytes;
+    render::Font font;
+    std::string source;  // the file's path, or "built-in 6x8"
+
+    LoadedFont() = default;
+    LoadedFont(LoadedFont&&) noexcept = default;
+    LoadedFont& operator=(LoadedFont&&) noexcept = default;
+    LoadedFont(const LoadedFont&) = delete;
+    LoadedFont& operator=(const LoadedFont&) = delete;
+};
+
+// Reads a PSF font, gzip-compressed or not, from `path`. On failure returns false, leaves `out`
+// unchanged and sets `error` to one sentence naming the path.
+bool load_console_font(const std::string& path, LoadedFont& out, std::string& error);
+
+// The HUD's font, the first that loads of: $NONEUCLID_FONT if set; in `console_fonts_dir`,
+// Lat15-Terminus16, Uni2-Terminus16, Lat15-Fixed16, Uni2-Fixed16 (.psf.gz); any other *.psf.gz
+// or *.psfu.gz there (in name order); else the built-in 6x8 font. Never fails. If `note` is
+// given it receives one sentence saying which font was chosen and why.
+LoadedFont default_hud_font(std::string* note,
+                            const std::string& console_fonts_dir = "/usr/share/consolefonts");
+
+}  // namespace noneuclid::platform

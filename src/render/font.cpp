@@ -1,0 +1,364 @@
+#include "render/font.hpp"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <string_view>
+#include <utility>
+
+namespace noneuclid::render {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// The built-in font, drawn here ('#' set, '.' clear), 12 glyphs to a block in code point order,
+// one space between glyphs. Rows 0..6 hold the glyph (capitals and digits 7 rows tall, lowercase
+// x-height rows 2..6, baseline row 6); row 7 only the descenders of g j p q y and the comma.
+// Turned into the bitmap table at compile time; a malformed drawing does not compile.
+// ---------------------------------------------------------------------------------------------
+constexpr int kCellWidth = 6, kCellHeight = 8, kBuiltinGlyphs = 128;
+
+struct ArtBlock {
+    char32_t first;
+    int count;
+    const char* rows[kCellHeight];
+};
+
+// clang-format off
+constexpr ArtBlock kArt[] = {
+    //   ' '   !     "     #     $     %     &     '     (     )     *     +
+    {32, 12, {"..... ..#.. .#.#. .#.#. ..#.. ##... .##.. ..#.. ...#. .#... ..... .....",
+              "..... ..#.. .#.#. .#.#. .#### ##..# #..#. ..#.. ..#.. ..#.. ..#.. ..#..",
+              "..... ..#.. ..... ##### #.#.. ...#. #.#.. ..... .#... ...#. #.#.# ..#..",
+              "..... ..#.. ..... .#.#. .###. ..#.. .#... ..... .#... ...#. .###. #####",
+              "..... ..#.. ..... ##### ..#.# .#... #.#.# ..... .#... ...#. #.#.# ..#..",
+              "..... ..... ..... .#.#. ####. #..## #..#. ..... ..#.. ..#.. ..#.. ..#..",
+              "..... ..#.. ..... .#.#. ..#.. ...## .##.# ..... ...#. .#... ..... .....",
+              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
+    //   ,     -     .     /     0     1     2     3     4     5     6     7
+    {44, 12, {"..... ..... ..... ..... .###. ..#.. .###. ##### ...#. ##### ..##. #####",
+              "..... ..... ..... ....# #...# .##.. #...# ...#. ..##. #.... .#... ....#",
+              "..... ..... ..... ...#. #..## ..#.. ....# ..#.. .#.#. ####. #.... ...#.",
+              "..... ##### ..... ..#.. #.#.# ..#.. ...#. ...#. #..#. ....# ####. ..#..",
+              "..... ..... ..... .#... ##..# ..#.. ..#.. ....# ##### ....# #...# .#...",
+              ".##.. ..... .##.. #.... #...# ..#.. .#... #...# ...#. #...# #...# .#...",
+              "..#.. ..... .##.. ..... .###. .###. ##### .###. ...#. .###. .###. .#...",
+              ".#... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
+    //   8     9     :     ;     <     =     >     ?     @     A     B     C
+    {56, 12, {".###. .###. ..... ..... ...#. ..... .#... .###. .###. .###. ####. .###.",
+              "#...# #...# .##.. .##.. ..#.. ..... ..#.. #...# #...# #...# #...# #...#",
+              "#...# #...# .##.. .##.. .#... ##### ...#. ....# #.### #...# #...# #....",
+              ".###. .#### ..... ..... #.... ..... ....# ...#. #.#.# ##### ####. #....",
+              "#...# ....# .##.. .##.. .#... ##### ...#. ..#.. #.### #...# #...# #....",
+              "#...# ...#. .##.. ..#.. ..#.. ..... ..#.. ..... #.... #...# #...# #...#",
+              ".###. .##.. ..... .#... ...#. ..... .#... ..#.. .#### #...# ####. .###.",
+              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
+    //   D     E     F     G     H     I     J     K     L     M     N     O
+    {68, 12, {"###.. ##### ##### .###. #...# .###. ..### #...# #.... #...# #...# .###.",
+              "#..#. #.... #.... #...# #...# ..#.. ...#. #..#. #.... ##.## #...# #...#",
+              "#...# #.... #.... #.... #...# ..#.. ...#. #.#.. #.... #.#.# ##..# #...#",
+              "#...# ####. ####. #.### ##### ..#.. ...#. ##... #.... #.#.# #.#.# #...#",
+              "#...# #.... #.... #...# #...# ..#.. ...#. #.#.. #.... #...# #..## #...#",
+              "#..#. #.... #.... #...# #...# ..#.. #..#. #..#. #.... #...# #...# #...#",
+              "###.. ##### #.... .#### #...# .###. .##.. #...# ##### #...# #...# .###.",
+              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
+    //   P     Q     R     S     T     U     V     W     X     Y     Z     [
+    {80, 12, {"####. .###. ####. .#### ##### #...# #...# #...# #...# #...# ##### .###.",
+              "#...# #...# #...# #.... ..#.. #...# #...# #...# #...# #...# ....# .#...",
+              "#...# #...# #...# #.... ..#.. #...# #...# #...# .#.#. .#.#. ...#. .#...",
+              "####. #...# ####. .###. ..#.. #...# #...# #.#.# ..#.. ..#.. ..#.. .#...",
+              "#.... #.#.# #.#.. ....# ..#.. #...# #...# #.#.# .#.#. ..#.. .#... .#...",
+              "#.... #..#. #..#. ....# ..#.. #...# .#.#. #.#.# #...# ..#.. #.... .#...",
+              "#.... .##.# #...# ####. ..#.. .###. ..#.. .#.#. #...# ..#.. ##### .###.",
+              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
+    //   \     ]     ^     _     `     a     b     c     d     e     f     g
+    {92, 12, {"..... .###. ..#.. ..... .#... ..... #.... ..... ....# ..... ..##. .....",
+              "#.... ...#. .#.#. ..... ..#.. ..... #.... ..... ....# ..... .#..# .....",
+              ".#... ...#. #...# ..... ..... .###. #.##. .###. .##.# .###. .#... .####",
+              "..#.. ...#. ..... ..... ..... ....# ##..# #.... #..## #...# ###.. #...#",
+              "...#. ...#. ..... ..... ..... .#### #...# #.... #...# ##### .#... #...#",
+              "....# ...#. ..... ..... ..... #...# #...# #...# #...# #.... .#... .####",
+              "..... .###. ..... ##### ..... .#### ####. .###. .#### .###. .#... ....#",
+              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... .###."}},
+    //   h     i     j     k     l     m     n     o     p     q     r     s
+    {104, 12, {"#.... ..#.. ...#. #.... .##.. ..... ..... ..... ..... ..... ..... .....",
+               "#.... ..... ..... #.... ..#.. ..... ..... ..... ..... ..... ..... .....",
+               "#.##. .##.. ..##. #..#. ..#.. ##.#. #.##. .###. ####. .#### #.##. .####",
+               "##..# ..#.. ...#. #.#.. ..#.. #.#.# ##..# #...# #...# #...# ##..# #....",
+               "#...# ..#.. ...#. ##... ..#.. #.#.# #...# #...# #...# #...# #.... .###.",
+               "#...# ..#.. ...#. #.#.. ..#.. #.#.# #...# #...# ####. .#### #.... ....#",
+               "#...# .###. #..#. #..#. .###. #.#.# #...# .###. #.... ....# #.... ####.",
+               "..... ..... .##.. ..... ..... ..... ..... ..... #.... ....# ..... ....."}},
+    //    t     u     v     w     x     y     z     {     |     }     ~
+    {116, 11, {".#... ..... ..... ..... ..... ..... ..... ...#. ..#.. .#... .....",
+               ".#... ..... ..... ..... ..... ..... ..... ..#.. ..#.. ..#.. .....",
+               "####. #...# #...# #...# #...# #...# ##### ..#.. ..#.. ..#.. .#...",
+               ".#... #...# #...# #...# .#.#. #...# ...#. .#... ..#.. ...#. #.#.#",
+               ".#... #...# #...# #.#.# ..#.. #...# ..#.. ..#.. ..#.. ..#.. ...#.",
+               ".#..# #..## .#.#. #.#.# .#.#. .#### .#... ..#.. ..#.. ..#.. .....",
+               "..##. .##.# ..#.. .#.#. #...# ....# ##### ...#. ..#.. .#... .....",
+               "..... ..... ..... ..... ..... .###. ..... ..... ..... ..... ....."}},
+};
+// clang-format on
+
+using GlyphTable = std::array<uint8_t, kBuiltinGlyphs * kCellHeight>;
+
+// Throwing here is a compile error, since the table is built in a constant expression.
+constexpr GlyphTable build_builtin() {
+    GlyphTable table{};
+    std::array<bool, kBuiltinGlyphs> drawn{};
+    for (const ArtBlock& block : kArt) {
+        for (int r = 0; r < kCellHeight; ++r) {
+            const std::string_view row = block.rows[r];
+            if (row.size() != std::size_t(block.count * kCellWidth - 1))
+                throw "bad row length";
+            for (int j = 0; j < block.count; ++j) {
+                const int code = int(block.first) + j;
+                uint8_t bits = 0;
+                for (int c = 0; c < kCellWidth - 1; ++c) {
+                    const char p = row[std::size_t(j * kCellWidth + c)];
+                    if (p == '#') {
+                        bits = uint8_t(bits | (0x80 >> c));
+                    } else if (p != '.') {
+                        throw "a glyph pixel is neither '#' nor '.'";
+                    }
+                }
+                if (j + 1 < block.count && row[std::size_t(j * kCellWidth + kCellWidth - 1)] != ' ')
+                    throw "glyphs must be separated by one space";
+                table[std::size_t(code * kCellHeight + r)] = bits;
+            }
+        }
+        for (int j = 0; j < block.count; ++j) {
+            const int code = int(block.first) + j;
+            if (code >= kBuiltinGlyphs || drawn[std::size_t(code)])
+                throw "glyph drawn twice";
+            drawn[std::size_t(code)] = true;
+        }
+    }
+    for (int code = 32; code <= 126; ++code)
+        if (!drawn[std::size_t(code)])
+            throw "a printable ASCII glyph is missing";
+    // Control characters and DEL show '?'.
+    for (int code = 0; code < kBuiltinGlyphs; ++code) {
+        if (code >= 32 && code <= 126)
+            continue;
+        for (int r = 0; r < kCellHeight; ++r)
+            table[std::size_t(code * kCellHeight + r)] = table[std::size_t('?' * kCellHeight + r)];
+    }
+    return table;
+}
+
+constexpr GlyphTable kBuiltinTable = build_builtin();
+
+constexpr Font kBuiltinFont{kCellWidth, kCellHeight, kBuiltinGlyphs, 1, kBuiltinTable.data()};
+
+// ---------------------------------------------------------------------------------------------
+// PSF
+// ---------------------------------------------------------------------------------------------
+constexpr int kMaxWidth = 64, kMaxHeight = 128, kMinGlyphs = 95;
+// Keeps glyph offsets (glyph * height * bytes_per_row <= 2^20 * 128 * 8) inside int.
+constexpr uint32_t kMaxGlyphs = 1u << 20;
+
+uint32_t le32(const uint8_t* p) {
+    return uint32_t{p[0]} | uint32_t{p[1]} << 8 | uint32_t{p[2]} << 16 | uint32_t{p[3]} << 24;
+}
+
+std::string truncated(const char* what, uint64_t expected, std::size_t found) {
+    return "the PSF font is truncated: " + std::to_string(expected) + " bytes of " + what
+           + " expected, " + std::to_string(found) + " found";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Text
+// ---------------------------------------------------------------------------------------------
+
+// The next code point of UTF-8 text at s[i], advancing i; U+FFFD for a malformed sequence
+// (which then consumes one byte).
+char32_t next_code_point(std::string_view s, std::size_t& i) {
+    const auto byte = [&](std::size_t k) {
+        return static_cast<unsigned char>(s[k]);
+    };
+    const unsigned char b0 = byte(i);
+    if (b0 < 0x80) {
+        ++i;
+        return b0;
+    }
+    int extra = 0;
+    char32_t c = 0, min = 0;
+    if ((b0 & 0xE0) == 0xC0) {
+        extra = 1, c = b0 & 0x1F, min = 0x80;
+    } else if ((b0 & 0xF0) == 0xE0) {
+        extra = 2, c = b0 & 0x0F, min = 0x800;
+    } else if ((b0 & 0xF8) == 0xF0) {
+        extra = 3, c = b0 & 0x07, min = 0x10000;
+    } else {
+        ++i;
+        return 0xFFFD;
+    }
+    if (s.size() - i <= std::size_t(extra)) {
+        ++i;
+        return 0xFFFD;
+    }
+    for (int k = 1; k <= extra; ++k) {
+        const unsigned char b = byte(i + std::size_t(k));
+        if ((b & 0xC0) != 0x80) {
+            ++i;
+            return 0xFFFD;
+        }
+        c = c << 6 | (b & 0x3F);
+    }
+    if (c < min || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) {
+        ++i;
+        return 0xFFFD;
+    }
+    i += std::size_t(extra) + 1;
+    return c;
+}
+
+// Offsets grow by at most one cell (<= 64 * INT_MAX) past this cap, so int64 arithmetic on pen
+// positions never overflows and anything beyond it is far outside any canvas.
+constexpr int64_t kOffsetCap = int64_t{1} << 40;
+
+void draw_glyph(const Canvas& canvas, const Font& font, int glyph, int64_t left, int64_t top,
+                int64_t scale, uint32_t word) {
+    const int64_t w = canvas.width(), h = canvas.height();
+    if (left >= w || top >= h || left + font.width * scale <= 0 || top + font.height * scale <= 0)
+        return;
+    for (int gy = 0; gy < font.height; ++gy) {
+        const int64_t y0 = std::max<int64_t>(top + gy * scale, 0);
+        const int64_t y1 = std::min<int64_t>(top + (gy + 1) * scale, h);
+        if (y0 >= y1)
+            continue;
+        for (int gx = 0; gx < font.width; ++gx) {
+            if (!font.pixel(glyph, gx, gy))
+                continue;
+            const int64_t x0 = std::max<int64_t>(left + gx * scale, 0);
+            const int64_t x1 = std::min<int64_t>(left + (gx + 1) * scale, w);
+            for (int64_t y = y0; y < y1; ++y)
+                for (int64_t x = x0; x < x1; ++x)
+                    canvas.set_word(int(x), int(y), word);
+        }
+    }
+}
+
+// Walks the text cell by cell; draws when `canvas` is given. Returns the longest line's width.
+int layout(const Canvas* canvas, const Font& font, int x, int y, std::string_view text, Rgb color,
+           int scale) {
+    const int64_t s = std::max(scale, 1);
+    const int64_t advance = font.width * s, line_height = font.height * s;
+    const uint32_t word = canvas ? canvas->format().pack(color) : 0;
+    int64_t line = 0, down = 0, longest = 0;
+    for (std::size_t i = 0; i < text.size();) {
+        const char32_t c = next_code_point(text, i);
+        if (c == U'\n') {
+            longest = std::max(longest, line);
+            line = 0;
+            if (down <= kOffsetCap)
+                down += line_height;
+            continue;
+        }
+        if (line > kOffsetCap)
+            continue;  // counted as saturated already
+        if (canvas && down <= kOffsetCap)
+            draw_glyph(*canvas, font, font.glyph_for(c), x + line, y + down, s, word);
+        line += advance;
+    }
+    longest = std::max(longest, line);
+    return int(std::min<int64_t>(longest, INT_MAX));
+}
+
+}  // namespace
+
+bool Font::pixel(int glyph, int x, int y) const {
+    if (glyphs == nullptr || glyph < 0 || glyph >= glyph_count || x < 0 || x >= width || y < 0
+        || y >= height)
+        return false;
+    const uint8_t* row =
+        glyphs
+        + (std::size_t(glyph) * std::size_t(height) + std::size_t(y)) * std::size_t(bytes_per_row);
+    return (row[x >> 3] >> (7 - (x & 7))) & 1;
+}
+
+int Font::glyph_for(char32_t c) const {
+    if (c < char32_t(std::max(glyph_count, 0)))
+        return int(c);
+    if ('?' < glyph_count)
+        return '?';
+    return glyph_count > 0 ? 0 : -1;
+}
+
+const Font& builtin_font() {
+    return kBuiltinFont;
+}
+
+bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& error) {
+    const auto fail = [&error](std::string message) {
+        error = std::move(message);
+        return false;
+    };
+    if (data == nullptr)
+        size = 0;
+    uint64_t header = 0, width = 0, height = 0, charsize = 0, count = 0;
+    if (size >= 2 && data[0] == 0x36 && data[1] == 0x04) {
+        header = 4;
+        if (size < header)
+            return fail(truncated("header", header, size));
+        count = (data[2] & 0x01) ? 512 : 256;
+        charsize = data[3];
+        height = charsize;
+        width = 8;
+    } else if (size >= 4 && data[0] == 0x72 && data[1] == 0xb5 && data[2] == 0x4a
+               && data[3] == 0x86) {
+        if (size < 32)
+            return fail(truncated("header", 32, size));
+        header = le32(data + 8);
+        count = le32(data + 16);
+        charsize = le32(data + 20);
+        height = le32(data + 24);
+        width = le32(data + 28);
+        if (header < 32)
+            return fail("the PSF2 header size is " + std::to_string(header)
+                        + " bytes, less than the 32 bytes of its own fields");
+        if (size < header)
+            return fail(truncated("header", header, size));
+    } else {
+        return fail("not a PSF font (bad magic number)");
+    }
+    if (width < 1 || width > kMaxWidth)
+        return fail("the PSF font's glyphs are " + std::to_string(width) + " pixels wide, and 1 to "
+                    + std::to_string(kMaxWidth) + " are supported");
+    if (height < 1 || height > kMaxHeight)
+        return fail("the PSF font's glyphs are " + std::to_string(height)
+                    + " pixels high, and 1 to " + std::to_string(kMaxHeight) + " are supported");
+    const uint64_t bytes_per_row = (width + 7) / 8;
+    if (charsize != height * bytes_per_row)
+        return fail("the PSF font's glyphs take " + std::to_string(charsize) + " bytes each, but "
+                    + std::to_string(height) + " rows of " + std::to_string(width) + " pixels take "
+                    + std::to_string(height * bytes_per_row));
+    if (count < kMinGlyphs)
+        return fail("the PSF font has " + std::to_string(count) + " glyphs, fewer than the "
+                    + std::to_string(kMinGlyphs) + " of printable ASCII");
+    if (count > kMaxGlyphs)
+        return fail("the PSF font has " + std::to_string(count) + " glyphs, more than the "
+                    + std::to_string(kMaxGlyphs) + " supported");
+    const uint64_t glyph_bytes = count * charsize;
+    if (size - header < glyph_bytes)
+        return fail(truncated("glyphs", glyph_bytes, size - header));
+    out.width = int(width);
+    out.height = int(height);
+    out.glyph_count = int(count);
+    out.bytes_per_row = int(bytes_per_row);
+    out.glyphs = data + header;
+    return true;
+}
+
+int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_view text,
+              Rgb color, int scale) {
+    return layout(&canvas, font, x, y, text, color, scale);
+}
+
+int text_width(const Font& font, std::string_view text, int scale) {
+    return layout(nullptr, font, 0, 0, text, {}, scale);
+}
+
+}  // namespace noneuclid::render

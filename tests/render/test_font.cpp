@@ -1,0 +1,660 @@
+// Fonts: the built-in font's glyphs, PSF1/PSF2 parsing against the bytes the test builds,
+// errors as one sentence, text drawn with canary borders and odd strides against a per-pixel
+// reference, and (where noneuclid_desktop is built) console font files and the HUD font choice.
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "render/canvas.hpp"
+#include "render/font.hpp"
+
+#if NONEUCLID_HAVE_DESKTOP
+#include <zlib.h>
+
+#include <cstdlib>
+
+#include "desktop/console_font.hpp"
+#endif
+
+using namespace noneuclid::render;
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// PSF files built byte by byte
+// ---------------------------------------------------------------------------------------------
+
+// The content of byte `k` of glyph `g`: varied, so that glyphs and rows differ.
+uint8_t pattern(int g, int k) {
+    return static_cast<uint8_t>((g * 37 + k * 11 + 5) & 0xFF);
+}
+
+std::vector<uint8_t> make_psf1(int height, uint8_t mode, int glyph_bytes = -1) {
+    const int count = (mode & 1) ? 512 : 256;
+    std::vector<uint8_t> v = {0x36, 0x04, mode, static_cast<uint8_t>(height)};
+    const int n = glyph_bytes >= 0 ? glyph_bytes : count * height;
+    for (int i = 0; i < n; ++i)
+        v.push_back(pattern(i / height, i % height));
+    return v;
+}
+
+void put32(std::vector<uint8_t>& v, std::size_t at, uint32_t x) {
+    for (int i = 0; i < 4; ++i)
+        v[at + std::size_t(i)] = static_cast<uint8_t>(x >> (8 * i));
+}
+
+struct Psf2 {
+    uint32_t width = 10, height = 12, count = 100, headersize = 32;
+    uint32_t charsize = 0;  // 0: height * bytes per row
+    long glyph_bytes = -1;  // -1: count * charsize
+};
+
+std::vector<uint8_t> make_psf2(Psf2 p) {
+    const uint32_t charsize = p.charsize ? p.charsize : p.height * ((p.width + 7) / 8);
+    std::vector<uint8_t> v(p.headersize >= 32 ? p.headersize : 32, 0xEE);
+    v[0] = 0x72, v[1] = 0xb5, v[2] = 0x4a, v[3] = 0x86;
+    put32(v, 4, 0);
+    put32(v, 8, p.headersize);
+    put32(v, 12, 0);
+    put32(v, 16, p.count);
+    put32(v, 20, charsize);
+    put32(v, 24, p.height);
+    put32(v, 28, p.width);
+    const long n = p.glyph_bytes >= 0 ? p.glyph_bytes : long(p.count) * long(charsize);
+    for (long i = 0; i < n; ++i)
+        v.push_back(pattern(int(i / charsize), int(i % charsize)));
+    return v;
+}
+
+// Pixel (x, y) of glyph g in a font built by make_psf1/make_psf2, from the pattern alone.
+bool pattern_pixel(int g, int x, int y, int bytes_per_row) {
+    return (pattern(g, y * bytes_per_row + x / 8) >> (7 - x % 8)) & 1;
+}
+
+void expect_font_matches_pattern(const Font& f) {
+    for (int g = 0; g < f.glyph_count; ++g)
+        for (int y = 0; y < f.height; ++y)
+            for (int x = 0; x < f.width; ++x)
+                ASSERT_EQ(f.pixel(g, x, y), pattern_pixel(g, x, y, f.bytes_per_row))
+                    << "glyph " << g << " pixel " << x << "," << y;
+}
+
+std::string parse_error(const std::vector<uint8_t>& bytes) {
+    Font f;
+    std::string error;
+    EXPECT_FALSE(parse_psf(bytes.data(), bytes.size(), f, error));
+    EXPECT_EQ(f.glyphs, nullptr) << "a failed parse must leave the font alone";
+    EXPECT_EQ(error.find('\n'), std::string::npos);
+    return error;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Guarded canvases
+// ---------------------------------------------------------------------------------------------
+
+// A buffer with a canary border: 3 canary rows above and below, 3 canary pixels left and right
+// of each row and an odd number of spare bytes ending each row. The canary bytes and the
+// canvas's own starting content are patterns, so that any stray or missing write shows.
+struct Guarded {
+    static constexpr int kPad = 3;
+    int w, h;
+    PixelFormat f;
+    std::ptrdiff_t stride;
+    std::vector<uint8_t> bytes, original;
+    Guarded(int w_, int h_, PixelFormat f_) : w(w_), h(h_), f(f_) {
+        stride = std::ptrdiff_t((w + 2 * kPad) * f.bytes_per_pixel() + 5);
+        bytes.resize(std::size_t(stride * (h + 2 * kPad)));
+        for (std::size_t i = 0; i < bytes.size(); ++i)
+            bytes[i] = static_cast<uint8_t>(i * 151 + 29);
+        original = bytes;
+    }
+    std::size_t offset(int x, int y) const {
+        return std::size_t((y + kPad) * stride + (x + kPad) * f.bytes_per_pixel());
+    }
+    Canvas canvas() { return Canvas(bytes.data() + offset(0, 0), w, h, stride, f); }
+    bool inside(std::size_t i) const {
+        const std::ptrdiff_t row = std::ptrdiff_t(i) / stride, col = std::ptrdiff_t(i) % stride;
+        return row >= kPad && row < kPad + h && col >= kPad * f.bytes_per_pixel()
+               && col < (kPad + w) * f.bytes_per_pixel();
+    }
+};
+
+// The test colour {0x12, 0x34, 0x56} as little-endian bytes, worked out by hand per format.
+std::vector<uint8_t> color_bytes(const PixelFormat& f) {
+    if (f.is_rgb565())
+        return {0xAA, 0x11};  // r 0x12>>3=2, g 0x34>>2=13, b 0x56>>3=10: 0x11AA
+    if (f.is_xrgb8888())
+        return {0x56, 0x34, 0x12, 0x00};
+    return {0x56, 0x34, 0x12};  // rgb888: B, G, R in memory
+}
+constexpr Rgb kColor{0x12, 0x34, 0x56};
+
+// Whether text drawn at (x0, y0) covers canvas pixel (px, py): the inverse of the layout, per
+// pixel, in 64-bit arithmetic (ASCII text only).
+bool reference_covers(const Font& font, std::string_view text, int64_t x0, int64_t y0,
+                      int64_t scale, int64_t px, int64_t py) {
+    const int64_t dx = px - x0, dy = py - y0;
+    if (dx < 0 || dy < 0)
+        return false;
+    const int64_t cw = font.width * scale, ch = font.height * scale;
+    int64_t line = dy / ch;
+    std::size_t start = 0;
+    while (line > 0) {
+        const std::size_t nl = text.find('\n', start);
+        if (nl == std::string_view::npos)
+            return false;
+        start = nl + 1;
+        --line;
+    }
+    const std::string_view this_line = text.substr(start, text.find('\n', start) - start);
+    const int64_t col = dx / cw;
+    if (col >= int64_t(this_line.size()))
+        return false;
+    const int gx = int((dx % cw) / scale), gy = int((dy % ch) / scale);
+    return font.pixel(font.glyph_for(static_cast<unsigned char>(this_line[std::size_t(col)])), gx,
+                      gy);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// The built-in font
+// ---------------------------------------------------------------------------------------------
+
+TEST(FontBuiltin, Layout) {
+    const Font& f = builtin_font();
+    EXPECT_EQ(f.width, 6);
+    EXPECT_EQ(f.height, 8);
+    EXPECT_EQ(f.bytes_per_row, 1);
+    EXPECT_GE(f.glyph_count, 127);
+    EXPECT_NE(f.glyphs, nullptr);
+}
+
+TEST(FontBuiltin, SpaceIsEmpty) {
+    const Font& f = builtin_font();
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 6; ++x)
+            EXPECT_FALSE(f.pixel(' ', x, y)) << x << "," << y;
+}
+
+TEST(FontBuiltin, PrintableGlyphsHaveInkAndAreDistinct) {
+    const Font& f = builtin_font();
+    auto bitmap = [&f](int g) {
+        uint64_t bits = 0;
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 6; ++x)
+                bits = bits << 1 | uint64_t(f.pixel(g, x, y));
+        return bits;
+    };
+    for (int a = 33; a <= 126; ++a) {
+        EXPECT_NE(bitmap(a), 0u) << "glyph '" << char(a) << "' is empty";
+        for (int b = a + 1; b <= 126; ++b)
+            EXPECT_NE(bitmap(a), bitmap(b))
+                << "'" << char(a) << "' and '" << char(b) << "' look alike";
+    }
+}
+
+TEST(FontBuiltin, GlyphsKeepToTheirBox) {
+    // 5x7 glyphs: the right column is spacing; the bottom row only for descenders and ','.
+    const Font& f = builtin_font();
+    const std::string_view descenders = "gjpqy,";
+    for (int c = 32; c <= 126; ++c) {
+        for (int y = 0; y < 8; ++y)
+            EXPECT_FALSE(f.pixel(c, 5, y)) << "'" << char(c) << "' row " << y;
+        if (descenders.find(char(c)) == std::string_view::npos) {
+            for (int x = 0; x < 6; ++x)
+                EXPECT_FALSE(f.pixel(c, x, 7)) << "'" << char(c) << "' column " << x;
+        }
+    }
+    bool any_descends = false;
+    for (char c : descenders)
+        for (int x = 0; x < 5; ++x)
+            any_descends |= f.pixel(c, x, 7);
+    EXPECT_TRUE(any_descends);
+}
+
+TEST(FontBuiltin, ShapesSpotChecked) {
+    const Font& f = builtin_font();
+    auto rows = [&f](char c) {
+        std::vector<std::string> r;
+        for (int y = 0; y < 8; ++y) {
+            std::string s;
+            for (int x = 0; x < 5; ++x)
+                s += f.pixel(c, x, y) ? '#' : '.';
+            r.push_back(s);
+        }
+        return r;
+    };
+    const std::vector<std::string> t = {"#####", "..#..", "..#..", "..#..",
+                                        "..#..", "..#..", "..#..", "....."};
+    const std::vector<std::string> minus = {".....", ".....", ".....", "#####",
+                                            ".....", ".....", ".....", "....."};
+    const std::vector<std::string> l = {"#....", "#....", "#....", "#....",
+                                        "#....", "#....", "#####", "....."};
+    EXPECT_EQ(rows('T'), t);
+    EXPECT_EQ(rows('-'), minus);
+    EXPECT_EQ(rows('L'), l);
+}
+
+TEST(FontBuiltin, GlyphForCodePoints) {
+    const Font& f = builtin_font();
+    EXPECT_EQ(f.glyph_for(U'A'), 'A');
+    EXPECT_EQ(f.glyph_for(U'~'), '~');
+    EXPECT_EQ(f.glyph_for(U'\u00e9'), '?');
+    EXPECT_EQ(f.glyph_for(U'\U0001F600'), '?');
+    // Control characters and DEL look like '?'.
+    for (int c : {0, 9, 27, 31, 127})
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 6; ++x)
+                EXPECT_EQ(f.pixel(f.glyph_for(char32_t(c)), x, y), f.pixel('?', x, y));
+    // Out-of-range queries are simply unset.
+    EXPECT_FALSE(f.pixel(-1, 0, 0));
+    EXPECT_FALSE(f.pixel(f.glyph_count, 0, 0));
+    EXPECT_FALSE(f.pixel('T', -1, 0));
+    EXPECT_FALSE(f.pixel('T', 6, 0));
+    EXPECT_FALSE(f.pixel('T', 0, 8));
+    EXPECT_EQ(Font{}.glyph_for(U'A'), -1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// PSF parsing
+// ---------------------------------------------------------------------------------------------
+
+TEST(FontPsf, Psf1) {
+    for (uint8_t mode : {0x00, 0x01, 0x02, 0x03}) {
+        std::vector<uint8_t> bytes = make_psf1(16, mode);
+        if (mode & 2)
+            bytes.insert(bytes.end(), {0x41, 0x00, 0xFF, 0xFF});  // a Unicode table, ignored
+        Font f;
+        std::string error;
+        ASSERT_TRUE(parse_psf(bytes.data(), bytes.size(), f, error)) << error;
+        EXPECT_EQ(f.width, 8);
+        EXPECT_EQ(f.height, 16);
+        EXPECT_EQ(f.bytes_per_row, 1);
+        EXPECT_EQ(f.glyph_count, (mode & 1) ? 512 : 256);
+        EXPECT_EQ(f.glyphs, bytes.data() + 4);
+        expect_font_matches_pattern(f);
+    }
+}
+
+TEST(FontPsf, Psf2) {
+    for (uint32_t headersize : {32u, 40u}) {
+        for (uint32_t width : {1u, 8u, 10u, 16u, 64u}) {
+            Psf2 p;
+            p.width = width;
+            p.headersize = headersize;
+            const std::vector<uint8_t> bytes = make_psf2(p);
+            Font f;
+            std::string error;
+            ASSERT_TRUE(parse_psf(bytes.data(), bytes.size(), f, error)) << error;
+            EXPECT_EQ(f.width, int(width));
+            EXPECT_EQ(f.height, 12);
+            EXPECT_EQ(f.bytes_per_row, int((width + 7) / 8));
+            EXPECT_EQ(f.glyph_count, 100);
+            EXPECT_EQ(f.glyphs, bytes.data() + headersize);
+            expect_font_matches_pattern(f);
+            EXPECT_FALSE(
+                f.pixel(5, int(width), 0));  // padding bits beyond the width are not pixels
+        }
+    }
+}
+
+TEST(FontPsf, Errors) {
+    EXPECT_EQ(parse_error({}), "not a PSF font (bad magic number)");
+    EXPECT_EQ(parse_error({'P', 'K', 3, 4, 0, 0}), "not a PSF font (bad magic number)");
+    EXPECT_EQ(parse_error({0x36}), "not a PSF font (bad magic number)");
+    EXPECT_EQ(parse_error({0x36, 0x04}),
+              "the PSF font is truncated: 4 bytes of header expected, 2 found");
+    EXPECT_EQ(parse_error(make_psf1(16, 0, 100)),
+              "the PSF font is truncated: 4096 bytes of glyphs expected, 100 found");
+    EXPECT_EQ(parse_error(make_psf1(0, 0)),
+              "the PSF font's glyphs are 0 pixels high, and 1 to 128 are supported");
+
+    std::vector<uint8_t> short_header = make_psf2({});
+    short_header.resize(20);
+    EXPECT_EQ(parse_error(short_header),
+              "the PSF font is truncated: 32 bytes of header expected, 20 found");
+    Psf2 p;
+    p.glyph_bytes = 300;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font is truncated: 2400 bytes of glyphs expected, 300 found");
+    p = {};
+    p.headersize = 16;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF2 header size is 16 bytes, less than the 32 bytes of its own fields");
+    p = {};
+    p.headersize = 1000;
+    p.glyph_bytes = 0;
+    std::vector<uint8_t> v = make_psf2(p);
+    v.resize(500);
+    EXPECT_EQ(parse_error(v),
+              "the PSF font is truncated: 1000 bytes of header expected, 500 found");
+    p = {};
+    p.charsize = 12;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font's glyphs take 12 bytes each, but 12 rows of 10 pixels take 24");
+    p = {};
+    p.width = 0;
+    p.charsize = 12;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font's glyphs are 0 pixels wide, and 1 to 64 are supported");
+    p = {};
+    p.width = 65;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font's glyphs are 65 pixels wide, and 1 to 64 are supported");
+    p = {};
+    p.height = 129;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font's glyphs are 129 pixels high, and 1 to 128 are supported");
+    p = {};
+    p.count = 94;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font has 94 glyphs, fewer than the 95 of printable ASCII");
+    p = {};
+    p.count = 0xFFFFFFFFu;
+    p.glyph_bytes = 0;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font has 4294967295 glyphs, more than the 1048576 supported");
+    p = {};
+    p.count = 1u << 20;
+    p.glyph_bytes = 10;  // count * charsize overflows 32 bits in a naive check; not here
+    p.charsize = 0;
+    p.height = 128;
+    p.width = 64;
+    EXPECT_EQ(parse_error(make_psf2(p)),
+              "the PSF font is truncated: 1073741824 bytes of glyphs expected, 10 found");
+
+    Font f;
+    std::string error;
+    EXPECT_FALSE(parse_psf(nullptr, 100, f, error));
+    EXPECT_EQ(error, "not a PSF font (bad magic number)");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Drawing text
+// ---------------------------------------------------------------------------------------------
+
+TEST(FontDraw, TextWidth) {
+    const Font& f = builtin_font();
+    EXPECT_EQ(text_width(f, "abc"), 18);
+    EXPECT_EQ(text_width(f, ""), 0);
+    EXPECT_EQ(text_width(f, "abc", 3), 54);
+    EXPECT_EQ(text_width(f, "abc", 0), 18);  // scale < 1 counts as 1
+    EXPECT_EQ(text_width(f, "abc", -7), 18);
+    EXPECT_EQ(text_width(f, "ab\nabcd\n"), 24);
+    EXPECT_EQ(text_width(f, "\n\n"), 0);
+    EXPECT_EQ(text_width(f, "\xc3\xa9t\xc3\xa9"), 18);  // UTF-8: one cell per code point
+    EXPECT_EQ(text_width(f, "\xf0\x9f\x98\x80"), 6);    // U+1F600
+    EXPECT_EQ(text_width(f, "\xff\xc3"), 12);           // malformed bytes: one cell each
+    EXPECT_EQ(text_width(f, "\xc0\xaf"), 12);           // overlong '/': two cells
+    EXPECT_EQ(text_width(f, "abc", INT_MAX), INT_MAX);  // saturates
+    EXPECT_EQ(text_width(f, std::string(1000, 'x'), 1 << 30), INT_MAX);
+    EXPECT_EQ(text_width(Font{}, "abc"), 0);
+}
+
+TEST(FontDraw, ClippedAndExactInEveryFormat) {
+    Psf2 p;  // a 10x12 font: two bytes per row
+    const std::vector<uint8_t> psf = make_psf2(p);
+    Font wide;
+    std::string error;
+    ASSERT_TRUE(parse_psf(psf.data(), psf.size(), wide, error)) << error;
+
+    const std::string_view text = "Hg!\nW_q%\n\n#j";
+    const int W = 37, H = 23;
+    const int64_t big = 1'000'000'000;
+    const std::pair<int64_t, int64_t> positions[] = {
+        {2, 3},
+        {-7, -5},
+        {W - 10, H - 6},
+        {-3, H - 4},
+        {W - 4, -9},
+        {-5, 4},
+        {4, -5},
+        {W - 1, 2},
+        {2, H - 1},
+        {-big, 5},
+        {big, 5},
+        {5, -big},
+        {5, big},
+        {-big, -big},
+        {big, big},
+        {INT_MIN, INT_MIN},
+        {INT_MAX, INT_MAX},
+        {INT_MIN, 0},
+        {0, INT_MAX},
+    };
+    for (const Font* font : {&builtin_font(), static_cast<const Font*>(&wide)}) {
+        for (const PixelFormat& fmt :
+             {PixelFormat::rgb565(), PixelFormat::xrgb8888(), PixelFormat::rgb888()}) {
+            const std::vector<uint8_t> ink = color_bytes(fmt);
+            for (int scale : {1, 2, 3, 1000, INT_MAX}) {
+                for (auto [x, y] : positions) {
+                    // With a huge scale, also place the text so that one block covers the canvas.
+                    const int64_t xs = scale >= 1000 && x == 2 ? -int64_t(scale) / 2 : x;
+                    const int64_t ys = scale >= 1000 && y == 3 ? -int64_t(scale) / 3 : y;
+                    SCOPED_TRACE(std::string(fmt.name) + " font " + std::to_string(font->width)
+                                 + "x" + std::to_string(font->height) + " scale "
+                                 + std::to_string(scale) + " at " + std::to_string(xs) + ","
+                                 + std::to_string(ys));
+                    Guarded g(W, H, fmt);
+                    const int returned =
+                        draw_text(g.canvas(), *font, int(xs), int(ys), text, kColor, scale);
+                    EXPECT_EQ(returned,
+                              int(std::min<int64_t>(int64_t(4) * font->width * scale, INT_MAX)));
+                    for (std::size_t i = 0; i < g.bytes.size(); ++i) {
+                        if (g.inside(i))
+                            continue;
+                        ASSERT_EQ(g.bytes[i], g.original[i])
+                            << "canary byte " << i << " overwritten";
+                    }
+                    const int bpp = fmt.bytes_per_pixel();
+                    for (int py = 0; py < H; ++py) {
+                        for (int px = 0; px < W; ++px) {
+                            const bool covered =
+                                reference_covers(*font, text, xs, ys, scale, px, py);
+                            for (int k = 0; k < bpp; ++k) {
+                                const std::size_t at = g.offset(px, py) + std::size_t(k);
+                                const uint8_t want = covered ? ink[std::size_t(k)] : g.original[at];
+                                ASSERT_EQ(g.bytes[at], want)
+                                    << "pixel " << px << "," << py << " byte " << k;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+TEST(FontDraw, EmptyCanvasAndEmptyFont) {
+    Canvas none;
+    EXPECT_EQ(draw_text(none, builtin_font(), 0, 0, "abc", kColor), 18);
+    Guarded g(8, 8, PixelFormat::xrgb8888());
+    EXPECT_EQ(draw_text(g.canvas(), Font{}, 0, 0, "abc", kColor), 0);
+    EXPECT_EQ(g.bytes, g.original);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Console font files and the HUD font (platform/desktop)
+// ---------------------------------------------------------------------------------------------
+#if NONEUCLID_HAVE_DESKTOP
+namespace {
+
+namespace fs = std::filesystem;
+using noneuclid::platform::default_hud_font;
+using noneuclid::platform::load_console_font;
+using noneuclid::platform::LoadedFont;
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        path = fs::temp_directory_path()
+               / ("noneuclid-font-" + std::string(info->name()) + "-"
+                  + std::to_string(std::random_device{}()));
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+void write_gz(const std::string& path, const std::vector<uint8_t>& bytes) {
+    gzFile f = gzopen(path.c_str(), "wb");
+    ASSERT_NE(f, nullptr) << path;
+    ASSERT_EQ(gzwrite(f, bytes.data(), unsigned(bytes.size())), int(bytes.size()));
+    ASSERT_EQ(gzclose(f), Z_OK);
+}
+
+void write_plain(const std::string& path, const std::vector<uint8_t>& bytes) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    ASSERT_TRUE(out.good()) << path;
+}
+
+// The loaded font's pixels are the file's, read through its own bytes.
+void expect_loaded(const LoadedFont& lf, int width, int height, int count) {
+    EXPECT_EQ(lf.font.width, width);
+    EXPECT_EQ(lf.font.height, height);
+    EXPECT_EQ(lf.font.glyph_count, count);
+    ASSERT_FALSE(lf.bytes.empty());
+    EXPECT_GE(lf.font.glyphs, lf.bytes.data());
+    EXPECT_LE(lf.font.glyphs + std::size_t(count * height * lf.font.bytes_per_row),
+              lf.bytes.data() + lf.bytes.size());
+    expect_font_matches_pattern(lf.font);
+}
+
+}  // namespace
+
+TEST(FontConsole, LoadsGzipAndPlainFiles) {
+    TempDir dir;
+    Psf2 p;
+    write_gz(dir.file("ten.psf.gz"), make_psf2(p));
+    write_plain(dir.file("sixteen.psf"), make_psf1(16, 1));
+    LoadedFont a, b;
+    std::string error;
+    ASSERT_TRUE(load_console_font(dir.file("ten.psf.gz"), a, error)) << error;
+    expect_loaded(a, 10, 12, 100);
+    EXPECT_EQ(a.source, dir.file("ten.psf.gz"));
+    ASSERT_TRUE(load_console_font(dir.file("sixteen.psf"), b, error)) << error;
+    expect_loaded(b, 8, 16, 512);
+
+    // Moving keeps font.glyphs pointing into the (moved) bytes.
+    LoadedFont moved = std::move(a);
+    expect_loaded(moved, 10, 12, 100);
+    LoadedFont assigned;
+    assigned = std::move(moved);
+    expect_loaded(assigned, 10, 12, 100);
+}
+
+TEST(FontConsole, ErrorsNameTheFile) {
+    TempDir dir;
+    LoadedFont f;
+    std::string error;
+    const std::string missing = dir.file("no-such-font.psf.gz");
+    EXPECT_FALSE(load_console_font(missing, f, error));
+    EXPECT_EQ(error, missing + ": cannot open the font file (No such file or directory)");
+
+    write_gz(dir.file("text.psf.gz"), {'h', 'e', 'l', 'l', 'o', '\n'});
+    EXPECT_FALSE(load_console_font(dir.file("text.psf.gz"), f, error));
+    EXPECT_EQ(error, dir.file("text.psf.gz") + ": not a PSF font (bad magic number)");
+
+    write_plain(dir.file("short.psf"), make_psf1(16, 0, 100));
+    EXPECT_FALSE(load_console_font(dir.file("short.psf"), f, error));
+    EXPECT_EQ(error, dir.file("short.psf")
+                         + ": the PSF font is truncated: 4096 bytes of glyphs expected, 100 found");
+
+    // A gzip stream cut short.
+    write_gz(dir.file("cut.psf.gz"), make_psf1(16, 0));
+    {
+        std::ifstream in(dir.file("cut.psf.gz"), std::ios::binary);
+        std::vector<char> all((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+        all.resize(all.size() / 2);
+        std::ofstream out(dir.file("cut.psf.gz"), std::ios::binary | std::ios::trunc);
+        out.write(all.data(), std::streamsize(all.size()));
+    }
+    EXPECT_FALSE(load_console_font(dir.file("cut.psf.gz"), f, error));
+    EXPECT_EQ(error.rfind(dir.file("cut.psf.gz") + ": cannot read the font file (", 0), 0u)
+        << error;
+
+    EXPECT_FALSE(load_console_font(dir.path.string(), f, error));  // a directory
+    EXPECT_EQ(error.rfind(dir.path.string() + ": cannot read the font file (", 0), 0u) << error;
+
+    EXPECT_EQ(error.find('\n'), std::string::npos);
+    EXPECT_TRUE(f.bytes.empty());
+    EXPECT_EQ(f.font.glyphs, nullptr);
+}
+
+TEST(FontConsole, HudFontChoice) {
+    TempDir dir, empty;
+    const std::string env_font = dir.file("mine.psf");
+    write_plain(env_font, make_psf1(14, 0));
+    std::string note;
+
+    // $NONEUCLID_FONT first.
+    ASSERT_EQ(setenv("NONEUCLID_FONT", env_font.c_str(), 1), 0);
+    LoadedFont f = default_hud_font(&note, empty.path.string());
+    EXPECT_EQ(f.source, env_font);
+    EXPECT_EQ(f.font.height, 14);
+    EXPECT_EQ(note, "HUD font: " + env_font + " (8x14), chosen by NONEUCLID_FONT.");
+
+    // An unusable $NONEUCLID_FONT and no console fonts: the built-in font, and the note says why.
+    ASSERT_EQ(setenv("NONEUCLID_FONT", dir.file("absent.psf").c_str(), 1), 0);
+    f = default_hud_font(&note, empty.path.string());
+    EXPECT_EQ(f.source, "built-in 6x8");
+    EXPECT_EQ(f.font.glyphs, builtin_font().glyphs);
+    EXPECT_EQ(note, "HUD font: the built-in 6x8 font, as no usable console font is in " +
+                        empty.path.string() +
+                        " (Debian's console-setup-linux provides them), since NONEUCLID_FONT is "
+                        "unusable (" + dir.file("absent.psf") +
+                        ": cannot open the font file (No such file or directory)).");
+    ASSERT_EQ(unsetenv("NONEUCLID_FONT"), 0);
+
+    // Any font in the directory, in name order, skipping unusable ones.
+    TempDir fonts;
+    write_gz(fonts.file("Aaa-broken.psf.gz"), {1, 2, 3});
+    write_gz(fonts.file("Bbb-Small12.psf.gz"), make_psf1(12, 0));
+    write_gz(fonts.file("Ccc-Large20.psf.gz"), make_psf1(20, 0));
+    write_plain(fonts.file("Abc-not-gz.psf"), make_psf1(10, 0));
+    f = default_hud_font(&note, fonts.path.string());
+    EXPECT_EQ(f.source, fonts.file("Bbb-Small12.psf.gz"));
+    EXPECT_EQ(note, "HUD font: " + fonts.file("Bbb-Small12.psf.gz")
+                        + " (8x12), the first usable font in " + fonts.path.string()
+                        + " (none of the preferred Terminus or Fixed 16-pixel fonts is there).");
+    expect_loaded(f, 8, 12, 256);
+
+    // A preferred font wins, in the documented order.
+    write_gz(fonts.file("Uni2-Fixed16.psf.gz"), make_psf1(16, 1));
+    f = default_hud_font(&note, fonts.path.string());
+    EXPECT_EQ(f.source, fonts.file("Uni2-Fixed16.psf.gz"));
+    write_gz(fonts.file("Uni2-Terminus16.psf.gz"), make_psf1(16, 0));
+    f = default_hud_font(nullptr, fonts.path.string());
+    EXPECT_EQ(f.source, fonts.file("Uni2-Terminus16.psf.gz"));
+    write_gz(fonts.file("Lat15-Terminus16.psf.gz"), make_psf2({}));
+    f = default_hud_font(&note, fonts.path.string());
+    EXPECT_EQ(f.source, fonts.file("Lat15-Terminus16.psf.gz"));
+    EXPECT_EQ(note, "HUD font: " + fonts.file("Lat15-Terminus16.psf.gz")
+                        + " (10x12), the preferred console font.");
+    expect_loaded(f, 10, 12, 100);
+
+    // A missing directory is like an empty one.
+    f = default_hud_font(&note, fonts.file("no-such-dir"));
+    EXPECT_EQ(f.source, "built-in 6x8");
+}
+#else
+TEST(FontConsole, NotBuilt) {
+    GTEST_SKIP() << "noneuclid_desktop is not built here (no zlib for the target), so console font "
+                    "files are not tested";
+}
+#endif
