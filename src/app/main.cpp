@@ -3,6 +3,9 @@
 // Until the renderer lands, the program has one command, `accuracy`, which prints how close
 // the fixed-point lookup-table functions come to the std:: double functions (the same
 // measurement tests/accuracy asserts on). Running with no command prints that report too.
+#if NONEUCLID_HAVE_DESKTOP
+#include "desktop/console_font.hpp"
+#endif
 #if NONEUCLID_HAVE_PNG
 #include "desktop/png_file.hpp"
 #endif
@@ -10,12 +13,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 #include <string>
 #include <vector>
 
 #include "fixed/accuracy.hpp"
 #include "fixed/tables.hpp"
 #include "geometry/accuracy.hpp"
+#include "render/hud.hpp"
 #include "render/render_scene.hpp"
 #include "world/actions.hpp"
 #include "world/dump.hpp"
@@ -31,14 +37,16 @@ void print_help(std::FILE* out) {
                  "usage: noneuclid [COMMAND] [OPTIONS]\n"
                  "\n"
                  "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin,\n"
-                 "Child & He (2019). The renderer is not built yet; today the program reports on\n"
-                 "its fixed-point core and geometry, and runs worlds without a screen.\n"
+                 "Child & He (2019). It runs worlds without a screen (dump), draws them to PNG\n"
+                 "pictures (render, demo) and reports on its own accuracy (accuracy).\n"
                  "\n"
                  "commands:\n"
+                 "  demo              render the kiosk scene and the paper's time-lapse figures to\n"
+                 "                    PNG files in ./out (--out-dir DIR), and say where; what the\n"
+                 "                    program does when given no command\n"
                  "  accuracy          measure every fixed-point function against std:: double and\n"
-                 "                    the geometry engines at the screen, and print the tables\n"
-                 "                    (default when no command is given); exit status 1 if any\n"
-                 "                    row misses its asserted bound\n"
+                 "                    the geometry engines at the screen, and print the tables;\n"
+                 "                    exit status 1 if any row misses its asserted bound\n"
                  "  dump              run a scene and write its state as JSON Lines, one line per\n"
                  "                    frame, frame 0 being the initial state\n"
                  "  render            run a scene and write its last frame as a PNG picture\n"
@@ -70,6 +78,9 @@ void print_help(std::FILE* out) {
                  "  --width PX        line width in pixels (default 1)\n"
                  "  --timelapse EVERY lay every EVERY-th frame's bodies over the earlier ones, as in\n"
                  "                    the paper's figures 14-17\n"
+                 "  --hud             draw K, the scene and the controls over the picture, in a\n"
+                 "                    console font (/usr/share/consolefonts, $NONEUCLID_FONT) or\n"
+                 "                    the built-in one\n"
                  "\n"
                  "  -h, --help        show this help\n"
                  "  --version         show the version\n");
@@ -239,6 +250,7 @@ struct DumpArgs {
     bool aa = false;
     double line_width = 1;
     long timelapse = 0;
+    bool hud = false;
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -294,6 +306,19 @@ int run_render(const noneuclid::world::Scene& scene, const DumpArgs& a,
     job.draw.antialias = a.aa;
     job.draw.line_width = static_cast<int32_t>(a.line_width * r::kSub + 0.5);
     r::render_scene(world, canvas, job, events);
+    if (a.hud) {
+        r::HudInfo info;
+        info.K = static_cast<double>(world.K);
+        info.scene = scene.name.c_str();
+        info.projection = noneuclid::geo::projection_name(a.dump.projection);
+#if NONEUCLID_HAVE_DESKTOP
+        std::string note;
+        const noneuclid::platform::LoadedFont font = noneuclid::platform::default_hud_font(&note);
+        r::draw_hud(canvas, font.font, info);
+#else
+        r::draw_hud(canvas, r::builtin_font(), info);
+#endif
+    }
 #if NONEUCLID_HAVE_PNG
     std::string error;
     if (!noneuclid::platform::write_png(a.out, canvas, error)) {
@@ -374,6 +399,8 @@ int world_command(int argc, char** argv, int i, bool render) {
             a.aa = true;
         } else if (render && opt == "--width") {
             a.line_width = parse_number("--width", value(), 0.1, 64);
+        } else if (render && opt == "--hud") {
+            a.hud = true;
         } else if (render && opt == "--timelapse") {
             a.timelapse = static_cast<long>(parse_count("--timelapse", value(), 1, 100000000));
         } else {
@@ -418,7 +445,51 @@ int world_command(int argc, char** argv, int i, bool render) {
 
 }  // namespace
 
+// `noneuclid demo` (also what the program does with no command): renders the kiosk scene and
+// the paper's time-lapse figures into a directory as PNG files, and says where.
+int demo_command(int argc, char** argv, int i) {
+    std::string dir = "out";
+    for (; i < argc; ++i) {
+        const std::string opt = argv[i];
+        if (opt == "--out-dir" && i + 1 < argc) dir = argv[++i];
+        else if (opt == "-h" || opt == "--help") return print_help(stdout), 0;
+        else usage_error("unknown option '" + opt + "' for demo; see 'noneuclid --help'.");
+    }
+#if !NONEUCLID_HAVE_PNG
+    usage_error("this build has no PNG support (libpng was not found when it was built): install libpng-dev and rebuild.");
+#endif
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) usage_error("cannot create the directory '" + dir + "': " + ec.message() + ".");
+    struct Picture {
+        const char* file;
+        std::vector<std::string> args;
+    };
+    const Picture pictures[] = {
+        {"kiosk.png", {"--scene", "kiosk", "--frames", "120", "--aa", "--hud", "--size", "800x480"}},
+        {"fig14.png", {"--scene", "fig14", "--frames", "600", "--timelapse", "40", "--size", "600x600"}},
+        {"fig15.png", {"--scene", "fig15", "--frames", "600", "--timelapse", "40", "--size", "600x600"}},
+        {"fig16.png", {"--scene", "fig16", "--frames", "120", "--timelapse", "15", "--size", "600x600"}},
+        {"fig17.png", {"--scene", "fig17", "--frames", "250", "--timelapse", "25", "--size", "600x600", "--hud"}},
+    };
+    for (const Picture& p : pictures) {
+        std::vector<std::string> words = p.args;
+        words.push_back("--out");
+        words.push_back(dir + "/" + p.file);
+        std::vector<char*> av{argv[0]};
+        for (std::string& w : words) av.push_back(w.data());
+        const int rc = world_command(static_cast<int>(av.size()), av.data(), 1, true);
+        if (rc != 0) return rc;
+    }
+    std::printf("noneuclid: the demo is in %s/: kiosk.png (the kiosk's picture with its HUD) and fig14.png .. "
+                "fig17.png (the paper's time-lapse figures). 'noneuclid --help' lists the commands.\n",
+                dir.c_str());
+    return 0;
+}
+
 int main(int argc, char** argv) {
+    if (argc == 1) return demo_command(argc, argv, 1);
+    if (std::strcmp(argv[1], "demo") == 0) return demo_command(argc, argv, 2);
     noneuclid::fx::AccuracyOptions options;
     int i = 1;
     if (i < argc && std::strcmp(argv[i], "dump") == 0) return dump_command(argc, argv, i + 1);
