@@ -215,22 +215,30 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
     const Columns col = columns(u0, u1);
     if (col.count == 0) return;
+    // Per column, in integers with 32 fractional bits of a pixel: the band's centre v (stepped by
+    // the slope) and its minor-axis extent h = width * length / major (set up once per line).
+    constexpr double kQ = 4294967296.0;
     const double slope = dv / du;
-    const double h = (width / double(kSub)) * std::sqrt(du * du + dv * dv) / std::fabs(du);  // px
+    const int64_t h = static_cast<int64_t>((width / double(kSub)) * std::sqrt(du * du + dv * dv) / std::fabs(du) * kQ);
+    const double uc0 = static_cast<double>(col.first * kSub + kSub / 2);
+    int64_t v = static_cast<int64_t>((static_cast<double>(v0) + (uc0 - static_cast<double>(u0)) * slope) / kSub * kQ);
+    const int64_t dv_col = static_cast<int64_t>(slope * static_cast<double>(col.step) * kQ);
+    const int64_t vmax = p.swap ? p.sink.width() : p.sink.height();
+    constexpr int64_t one = int64_t{1} << 32;
     int64_t u = col.first;
-    for (int64_t k = 0; k < col.count; ++k, u += col.step) {
-        const double uc = static_cast<double>(u * kSub + kSub / 2);
-        const double v = (static_cast<double>(v0) + (uc - static_cast<double>(u0)) * slope) / kSub;  // px
-        const double lo = v - h / 2, hi = v + h / 2;
+    for (int64_t k = 0; k < col.count; ++k, u += col.step, v += dv_col) {
+        const int64_t lo = v - h / 2, hi = v + h / 2;
+        int64_t r = lo >> 32;
         if (aa) {
-            for (int64_t r = static_cast<int64_t>(std::floor(lo)); static_cast<double>(r) < hi; ++r) {
-                const double a = std::fmin(hi, static_cast<double>(r + 1)) - std::fmax(lo, static_cast<double>(r));
-                const int alpha = static_cast<int>(a * 255 + 0.5);
+            for (; (r << 32) < hi; ++r) {
+                if (static_cast<uint64_t>(r) >= static_cast<uint64_t>(vmax)) continue;
+                const int64_t top = (r << 32) > lo ? (r << 32) : lo, bottom = ((r + 1) << 32) < hi ? ((r + 1) << 32) : hi;
+                const int alpha = static_cast<int>(((bottom - top) * 255 + (one >> 1)) >> 32);
                 if (alpha > 0) p.blend(u, r, alpha);
             }
         } else {  // rows whose centre r + 1/2 lies in [lo, hi)
-            const int64_t first = static_cast<int64_t>(std::ceil(lo - 0.5)), last = static_cast<int64_t>(std::ceil(hi - 0.5)) - 1;
-            for (int64_t r = first; r <= last; ++r) p.opaque(u, r);
+            const int64_t first = (lo - (one >> 1) + one - 1) >> 32, last = ((hi - (one >> 1) + one - 1) >> 32) - 1;
+            for (r = first; r <= last; ++r) p.opaque(u, r);
         }
     }
 }
