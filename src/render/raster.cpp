@@ -188,12 +188,27 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
         const std::ptrdiff_t major = (p.swap ? p.sink.stride : bpp) * col.step;
         const std::ptrdiff_t minor = p.swap ? bpp : p.sink.stride;
         std::ptrdiff_t off = p.swap ? u * p.sink.stride + row * bpp : row * p.sink.stride + u * bpp;
-        for (int64_t k = 1; k < col.count; ++k) {
-            off += major;
-            rem += step;
-            if (rem >= A) rem -= A, ++row, off += minor;
-            else if (rem < 0) rem += A, --row, off -= minor;
-            if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.sink.store(off);
+        // Branch-free carry: the minor axis moves one way only along a line.
+        if (step >= 0) {
+            for (int64_t k = 1; k < col.count; ++k) {
+                off += major;
+                rem += step;
+                const int64_t carry = rem >= A;
+                rem -= A & -carry;
+                row += carry;
+                off += minor & -carry;
+                if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.sink.store(off);
+            }
+        } else {
+            for (int64_t k = 1; k < col.count; ++k) {
+                off += major;
+                rem += step;
+                const int64_t borrow = rem < 0;
+                rem += A & -borrow;
+                row -= borrow;
+                off -= minor & -borrow;
+                if (static_cast<uint64_t>(row) < static_cast<uint64_t>(vmax)) p.sink.store(off);
+            }
         }
         u += (col.count - 1) * col.step;
     } else {
