@@ -1,7 +1,7 @@
 // Cost of each fixed-point function against std:: double and float, measured side by side in
 // one run (Google Benchmark), with a summary table of ns/call and ratios at the end.
-//     build/release/tests/bench_fixed                       # everything
-//     build/release/tests/bench_fixed --benchmark_filter=sin
+//     build/release/bench_fixed                       # everything
+//     build/release/bench_fixed --benchmark_filter=sin
 // Each call takes its input from a 1024-entry array (see functions.hpp) so nothing folds away;
 // the loop costs the same for every implementation.
 #include <benchmark/benchmark.h>
