@@ -9,6 +9,10 @@
 #if NONEUCLID_HAVE_PNG
 #include "desktop/png_file.hpp"
 #endif
+#if NONEUCLID_HAVE_X11
+#include "desktop/x11_window.hpp"
+#endif
+#include "desktop/display_choice.hpp"
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -50,6 +54,8 @@ void print_help(std::FILE* out) {
                  "  dump              run a scene and write its state as JSON Lines, one line per\n"
                  "                    frame, frame 0 being the initial state\n"
                  "  render            run a scene and write its last frame as a PNG picture\n"
+                 "  run               run a scene live: an X11 window when DISPLAY is set, else\n"
+                 "                    the demo's PNG files (see README, 'Desktop', for the keys)\n"
                  "\n"
                  "options for accuracy:\n"
                  "  --samples N       evenly spaced samples per row (default 262144)\n"
@@ -81,6 +87,18 @@ void print_help(std::FILE* out) {
                  "  --hud             draw K, the scene and the controls over the picture, in a\n"
                  "                    console font (/usr/share/consolefonts, $NONEUCLID_FONT) or\n"
                  "                    the built-in one\n"
+                 "\n"
+                 "options for run:\n"
+                 "  --display D       x11, fbdev (comes with the kiosk: renders PNGs for now) or\n"
+                 "                    png (the demo); default x11 if DISPLAY is set, else fbdev on\n"
+                 "                    a framebuffer console, else png\n"
+                 "  --scene, --curvature, --engine, --projection, --size (window, default 800x480),\n"
+                 "  --aa              as above\n"
+                 "  --frames N        quit after N frames (default: when the window is closed)\n"
+                 "  --fps CAP         frame rate cap (default 60); world time is 1/60 s a frame\n"
+                 "  --screenshot F    at exit, read the window back from the X server into F.png\n"
+                 "  --no-hud          start with the HUD off (H toggles it)\n"
+                 "  --stats           at exit, print frames, wall time and CPU seconds\n"
                  "\n"
                  "  -h, --help        show this help\n"
                  "  --version         show the version\n");
@@ -267,6 +285,21 @@ double parse_number(const char* option, const char* text, double lo, double hi) 
     return v;
 }
 
+// A built-in scene or a TOML scene file; on failure prints one sentence and returns false.
+bool load_scene(const std::string& name, const noneuclid::world::SceneParams& params, noneuclid::world::Scene& scene) {
+    using namespace noneuclid::world;
+    if (builtin_scene(name, params, scene)) return true;
+    SceneError err;
+    if (load_scene_file(name, scene, err)) return true;
+    if (err.line == 0 && name.find('/') == std::string::npos && name.find(".toml") == std::string::npos) {
+        std::string names;
+        for (const char* const* n = builtin_scene_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
+        usage_error("no built-in scene '" + name + "' and no scene file by that name: the built-in scenes are " + names + ".");
+    }
+    std::fprintf(stderr, "%s\n", err.to_string().c_str());
+    return false;
+}
+
 template <class W>
 int run_dump(const noneuclid::world::Scene& scene, const DumpArgs& a,
              const std::vector<noneuclid::world::ActionEvent>& events) {
@@ -409,19 +442,7 @@ int world_command(int argc, char** argv, int i, bool render) {
     }
     if (render && a.out.empty()) usage_error("render needs --out FILE.png: where to write the picture.");
     Scene scene;
-    if (!builtin_scene(a.scene, a.params, scene)) {
-        SceneError err;
-        if (!load_scene_file(a.scene, scene, err)) {
-            if (err.line == 0 && a.scene.find('/') == std::string::npos && a.scene.find(".toml") == std::string::npos) {
-                std::string names;
-                for (const char* const* n = builtin_scene_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
-                usage_error("no built-in scene '" + a.scene + "' and no scene file by that name: the built-in scenes are " +
-                            names + ".");
-            }
-            std::fprintf(stderr, "%s\n", err.to_string().c_str());
-            return 2;
-        }
-    }
+    if (!load_scene(a.scene, a.params, scene)) return 2;
     if (a.has_curvature) scene.curvature = a.curvature;
     std::vector<ActionEvent> events;
     if (!a.actions.empty()) {
@@ -487,9 +508,104 @@ int demo_command(int argc, char** argv, int i) {
     return 0;
 }
 
+// `noneuclid run`: the scene live in a window (X11), or the demo's PNG files without one.
+int run_command(int argc, char** argv, int i) {
+    using noneuclid::platform::DisplayKind;
+    std::string display, scene_name = "kiosk";
+    bool has_curvature = false;
+    double curvature = 0;
+    long frames = 0;
+    double fps = 60;
+    int width = 800, height = 480;
+    bool aa = false, hud = true, stats = false;
+    std::string engine = "fixed", screenshot;
+    noneuclid::geo::Projection projection = noneuclid::geo::Projection::azimuthal_equidistant;
+    for (; i < argc; ++i) {
+        const std::string opt = argv[i];
+        auto value = [&]() -> const char* {
+            if (i + 1 >= argc) usage_error(opt + " needs a value; see 'noneuclid --help'.");
+            return argv[++i];
+        };
+        if (opt == "-h" || opt == "--help") {
+            print_help(stdout);
+            return 0;
+        } else if (opt == "--display") {
+            display = value();
+            if (display != "x11" && display != "fbdev" && display != "png")
+                usage_error("--display must be x11, fbdev or png, not '" + display + "'.");
+        } else if (opt == "--scene") {
+            scene_name = value();
+        } else if (opt == "--curvature") {
+            has_curvature = true;
+            curvature = parse_number("--curvature", value(), -1, 1);
+        } else if (opt == "--frames") {
+            frames = static_cast<long>(parse_count("--frames", value(), 1, 100000000));
+        } else if (opt == "--fps") {
+            fps = parse_number("--fps", value(), 1, 1000);
+        } else if (opt == "--size") {
+            const char* v = value();
+            int w = 0, h = 0;
+            char tail = 0;
+            if (std::sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
+                usage_error(std::string("--size needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '") + v + "'.");
+            width = w, height = h;
+        } else if (opt == "--aa") {
+            aa = true;
+        } else if (opt == "--no-hud") {
+            hud = false;
+        } else if (opt == "--stats") {
+            stats = true;
+        } else if (opt == "--engine") {
+            engine = value();
+            if (engine != "fixed" && engine != "double" && engine != "float" && engine != "paper")
+                usage_error("--engine must be fixed, double, float or paper, not '" + engine + "'.");
+        } else if (opt == "--projection") {
+            const std::string p = value();
+            bool found = false;
+            for (noneuclid::geo::Projection pr : noneuclid::geo::kProjections)
+                if (p == noneuclid::geo::projection_name(pr)) projection = pr, found = true;
+            if (!found)
+                usage_error("--projection must be equidistant, stereographic, gnomonic, orthographic or lambert, not '" + p + "'.");
+        } else if (opt == "--screenshot") {
+            screenshot = value();
+        } else {
+            usage_error("unknown option '" + opt + "' for run; see 'noneuclid --help'.");
+        }
+    }
+    DisplayKind kind = DisplayKind::png;
+    std::string reason;
+    if (!display.empty()) {
+        kind = display == "x11" ? DisplayKind::x11 : (display == "fbdev" ? DisplayKind::fbdev : DisplayKind::png);
+        reason = "--display " + display + " asked for it";
+    } else {
+        const noneuclid::platform::DisplayChoice c = noneuclid::platform::choose_display();
+        kind = c.display, reason = c.reason;
+    }
+    const char* kind_name = kind == DisplayKind::x11 ? "x11" : (kind == DisplayKind::fbdev ? "fbdev" : "png");
+    std::fprintf(stderr, "noneuclid: display %s, because %s.\n", kind_name, reason.c_str());
+    if (kind == DisplayKind::fbdev) {
+        std::fprintf(stderr, "noneuclid: fbdev output comes with the kiosk; rendering the demo to PNG files instead.\n");
+        kind = DisplayKind::png;
+    }
+    if (kind == DisplayKind::png) return demo_command(argc, argv, argc);
+    noneuclid::world::Scene scene;
+    if (!load_scene(scene_name, noneuclid::world::SceneParams{}, scene)) return 2;
+    if (has_curvature) scene.curvature = curvature;
+#if NONEUCLID_HAVE_X11
+    noneuclid::platform::RunOptions o;
+    o.width = width, o.height = height, o.frames = frames, o.fps = fps, o.antialias = aa, o.hud = hud;
+    o.engine = engine, o.projection = projection, o.screenshot = screenshot, o.stats = stats;
+    return noneuclid::platform::run_x11(scene, o);
+#else
+    (void)frames, (void)fps, (void)width, (void)height, (void)aa, (void)hud, (void)stats, (void)projection;
+    usage_error("this build has no X11 window (Xlib was not found when it was built): install libx11-dev and libxext-dev and rebuild, or use --display png.");
+#endif
+}
+
 int main(int argc, char** argv) {
     if (argc == 1) return demo_command(argc, argv, 1);
     if (std::strcmp(argv[1], "demo") == 0) return demo_command(argc, argv, 2);
+    if (std::strcmp(argv[1], "run") == 0) return run_command(argc, argv, 2);
     noneuclid::fx::AccuracyOptions options;
     int i = 1;
     if (i < argc && std::strcmp(argv[i], "dump") == 0) return dump_command(argc, argv, i + 1);

@@ -1,0 +1,38 @@
+// png_diff A.png B.png: prints how many pixels differ by more than 8 levels in any channel;
+// exit 0 if that is at most 0.5% of the pixels (and the sizes match), 1 otherwise, 2 on a bad
+// file. Used by x11_test.sh to compare the window (read back from the X server) with render.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "desktop/png_file.hpp"
+
+int main(int argc, char** argv) {
+    if (argc != 3) {
+        std::fprintf(stderr, "usage: png_diff A.png B.png\n");
+        return 2;
+    }
+    int wa = 0, ha = 0, wb = 0, hb = 0;
+    std::string a, b, error;
+    if (!noneuclid::platform::read_png(argv[1], wa, ha, a, error) || !noneuclid::platform::read_png(argv[2], wb, hb, b, error)) {
+        std::fprintf(stderr, "png_diff: %s\n", error.c_str());
+        return 2;
+    }
+    if (wa != wb || ha != hb) {
+        std::printf("sizes differ: %dx%d against %dx%d\n", wa, ha, wb, hb);
+        return 1;
+    }
+    long differ = 0;
+    const long pixels = static_cast<long>(wa) * ha;
+    for (long i = 0; i < pixels; ++i)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(static_cast<unsigned char>(a[static_cast<std::size_t>(i * 3 + c)]) -
+                         static_cast<unsigned char>(b[static_cast<std::size_t>(i * 3 + c)])) > 8) {
+                ++differ;
+                break;
+            }
+    const bool ok = differ * 200 <= pixels;  // at most 0.5%
+    std::printf("%ld of %ld pixels differ by more than 8 levels (%.3f%%, limit 0.5%%): %s\n", differ, pixels,
+                100.0 * static_cast<double>(differ) / static_cast<double>(pixels), ok ? "same" : "DIFFERENT");
+    return ok ? 0 : 1;
+}
