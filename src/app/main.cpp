@@ -1,8 +1,6 @@
-// noneuclid: command-line front end.
-//
-// Until the renderer lands, the program has one command, `accuracy`, which prints how close
-// the fixed-point lookup-table functions come to the std:: double functions (the same
-// measurement tests/accuracy asserts on). Running with no command prints that report too.
+// noneuclid: command-line front end. Commands: run (a window, or the demo to PNG files
+// headless), demo, render (PNG), dump (JSON Lines), accuracy (the fixed-point core and the
+// geometry against their references). `noneuclid --help` lists them with their options.
 #if NONEUCLID_HAVE_DESKTOP
 #include "desktop/console_font.hpp"
 #endif
