@@ -1,0 +1,81 @@
+// No heap allocation per frame in steady state: a counting global operator new, switched on
+// only around the frames, while the world steps and the whole frame is drawn (fixed and double
+// engines, kiosk and stress, aliased and anti-aliased, every pixel format).
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+#include <vector>
+
+#include "render/draw_world.hpp"
+#include "render/hud.hpp"
+
+namespace {
+std::atomic<bool> g_counting{false};
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(n ? n : 1)) return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace {
+
+using namespace noneuclid;
+
+template <class T>
+long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool aa, int frames) {
+    world::Scene scene;
+    const world::SceneParams params{30, 6, 6};
+    EXPECT_TRUE(world::builtin_scene(scene_name, params, scene));
+    world::World<T> w(scene);
+    render::DrawScratch<T> scratch;
+    scratch.prepare(w);
+    std::vector<uint8_t> px(static_cast<std::size_t>(320 * 240 * f.bytes_per_pixel()));
+    const render::Canvas c(px.data(), 320, 240, 320 * f.bytes_per_pixel(), f);
+    render::DrawOptions o;
+    o.antialias = aa;
+    render::HudInfo hud;
+    w.press(world::Action::thrust);  // the ship accelerates: the velocity path runs too
+    w.press(world::Action::curvature_down);
+    for (int i = 0; i < 3; ++i) w.step(T(1.0 / 60)), render::draw_world(c, w, o, scratch);  // warm up
+    g_allocations = 0;
+    g_counting = true;
+    for (int i = 0; i < frames; ++i) {
+        w.step(T(1.0 / 60));
+        render::draw_world(c, w, o, scratch);
+        hud.K = static_cast<double>(w.K);
+        render::draw_hud(c, render::builtin_font(), hud);
+    }
+    g_counting = false;
+    return g_allocations.load();
+}
+
+TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
+    for (const char* s : {"kiosk", "stress", "fig17"})
+        for (bool aa : {false, true}) {
+            EXPECT_EQ(allocations_per_frames<fx::fixed>(s, render::PixelFormat::rgb565(), aa, 120), 0) << s;
+            EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), aa, 120), 0) << s;
+            EXPECT_EQ(allocations_per_frames<float>(s, render::PixelFormat::rgb888(), aa, 60), 0) << s;
+        }
+}
+
+// The counter does count: a frame that builds a vector is seen.
+TEST(NoAllocation, TheCounterSeesAnAllocation) {
+    g_allocations = 0;
+    g_counting = true;
+    std::vector<int> v(10);
+    g_counting = false;
+    EXPECT_GE(g_allocations.load(), 1);
+    EXPECT_EQ(v.size(), 10u);
+}
+
+}  // namespace
