@@ -366,6 +366,26 @@ int run_render(const noneuclid::world::Scene& scene, const DumpArgs& a,
 #endif
 }
 
+// Option values shared by dump, render and run: one sentence and exit 2 when they are wrong.
+void parse_size(const char* v, int& width, int& height) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
+        usage_error(std::string("--size needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '") + v + "'.");
+    width = w, height = h;
+}
+std::string parse_engine(const char* v) {
+    const std::string e = v;
+    if (e != "fixed" && e != "double" && e != "float" && e != "paper")
+        usage_error("--engine must be fixed, double, float or paper, not '" + e + "'.");
+    return e;
+}
+noneuclid::geo::Projection parse_projection(const char* v) {
+    for (noneuclid::geo::Projection pr : noneuclid::geo::kProjections)
+        if (std::string(v) == noneuclid::geo::projection_name(pr)) return pr;
+    usage_error(std::string("--projection must be equidistant, stereographic, gnomonic, orthographic or lambert, not '") + v + "'.");
+}
+
 int world_command(int argc, char** argv, int i, bool render);
 
 int dump_command(int argc, char** argv, int i) { return world_command(argc, argv, i, false); }
@@ -393,25 +413,13 @@ int world_command(int argc, char** argv, int i, bool render) {
         } else if (opt == "--dt") {
             a.dt = parse_number("--dt", value(), 1e-4, 1);
         } else if (opt == "--engine") {
-            a.engine = value();
-            if (a.engine != "fixed" && a.engine != "double" && a.engine != "float" && a.engine != "paper")
-                usage_error("--engine must be fixed, double, float or paper, not '" + a.engine + "'.");
+            a.engine = parse_engine(value());
         } else if (opt == "--actions") {
             a.actions = value();
         } else if (opt == "--size") {
-            const char* v = value();
-            int w = 0, h = 0;
-            char tail = 0;
-            if (std::sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
-                usage_error(std::string("--size needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '") + v + "'.");
-            a.dump.width = w, a.dump.height = h;
+            parse_size(value(), a.dump.width, a.dump.height);
         } else if (opt == "--projection") {
-            const std::string p = value();
-            bool found = false;
-            for (noneuclid::geo::Projection pr : noneuclid::geo::kProjections)
-                if (p == noneuclid::geo::projection_name(pr)) a.dump.projection = pr, found = true;
-            if (!found)
-                usage_error("--projection must be equidistant, stereographic, gnomonic, orthographic or lambert, not '" + p + "'.");
+            a.dump.projection = parse_projection(value());
         } else if (opt == "--bodies") {
             a.params.bodies = static_cast<int>(parse_count("--bodies", value(), 1, 100000));
         } else if (opt == "--vertices") {
@@ -541,12 +549,7 @@ int run_command(int argc, char** argv, int i) {
         } else if (opt == "--fps") {
             fps = parse_number("--fps", value(), 1, 1000);
         } else if (opt == "--size") {
-            const char* v = value();
-            int w = 0, h = 0;
-            char tail = 0;
-            if (std::sscanf(v, "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
-                usage_error(std::string("--size needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '") + v + "'.");
-            width = w, height = h;
+            parse_size(value(), width, height);
         } else if (opt == "--aa") {
             aa = true;
         } else if (opt == "--no-hud") {
@@ -554,16 +557,9 @@ int run_command(int argc, char** argv, int i) {
         } else if (opt == "--stats") {
             stats = true;
         } else if (opt == "--engine") {
-            engine = value();
-            if (engine != "fixed" && engine != "double" && engine != "float" && engine != "paper")
-                usage_error("--engine must be fixed, double, float or paper, not '" + engine + "'.");
+            engine = parse_engine(value());
         } else if (opt == "--projection") {
-            const std::string p = value();
-            bool found = false;
-            for (noneuclid::geo::Projection pr : noneuclid::geo::kProjections)
-                if (p == noneuclid::geo::projection_name(pr)) projection = pr, found = true;
-            if (!found)
-                usage_error("--projection must be equidistant, stereographic, gnomonic, orthographic or lambert, not '" + p + "'.");
+            projection = parse_projection(value());
         } else if (opt == "--screenshot") {
             screenshot = value();
         } else {
