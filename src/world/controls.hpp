@@ -1,0 +1,46 @@
+// What a button, a key or the attract-mode autopilot can ask for: the world's actions (held or
+// tapped, see world.hpp) plus the display's own commands. Board files name them; the input
+// backends (platform/linux) deliver them as press/release events.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "world/world.hpp"
+
+namespace noneuclid::world {
+
+enum class Control : uint8_t {
+    thrust, left, right, curvature_up, curvature_down, preset, reset,  // = world::Action, same order
+    projection,  // next projection (on press)
+    hud,         // HUD on/off (on press)
+    quit,        // leave the program (on press; for keyboards, not kiosk buttons)
+};
+inline constexpr int kControlCount = 10;
+
+inline const char* control_name(Control c) {
+    static const char* const names[] = {"thrust", "left", "right", "curvature_up", "curvature_down",
+                                        "preset", "reset", "projection", "hud", "quit"};
+    return names[static_cast<int>(c)];
+}
+inline bool parse_control(const std::string& s, Control& out) {
+    for (int i = 0; i < kControlCount; ++i)
+        if (s == control_name(static_cast<Control>(i))) {
+            out = static_cast<Control>(i);
+            return true;
+        }
+    return false;
+}
+// The world action a control is, if it is one.
+inline bool control_action(Control c, Action& out) {
+    if (static_cast<int>(c) >= kActionCount) return false;
+    out = static_cast<Action>(c);
+    return true;
+}
+
+struct InputEvent {
+    Control control = Control::thrust;
+    bool pressed = false;
+};
+
+}  // namespace noneuclid::world
