@@ -1,0 +1,143 @@
+#include "world/board.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "geometry/geometry.hpp"
+#include "world/toml_reader.hpp"
+
+namespace noneuclid::world {
+namespace {
+
+using tomlr::Bad, tomlr::Reader, tomlr::quote, tomlr::tables, tomlr::type_name;
+
+const toml::table* section(const toml::table& root, const char* key) {
+    const toml::node* n = root.get(key);
+    if (!n) return nullptr;
+    if (const toml::table* t = n->as_table()) return t;
+    throw Bad{n->source(), std::string("expected a [") + key + "] table, found " + type_name(*n)};
+}
+
+std::vector<std::string> strings(const toml::table& t, const char* key, const std::string& context) {
+    std::vector<std::string> out;
+    const toml::node* n = t.get(key);
+    if (!n) return out;
+    if (auto s = n->as_string()) return {s->get()};
+    const toml::array* a = n->as_array();
+    if (!a) throw Bad{n->source(), context + "expected a string or a list of strings for " + quote(key) + ", found " + type_name(*n)};
+    for (const toml::node& e : *a) {
+        auto s = e.as_string();
+        if (!s) throw Bad{e.source(), context + "expected strings in " + quote(key) + ", found " + type_name(e)};
+        out.push_back(s->get());
+    }
+    return out;
+}
+
+void read_board(const toml::table& root, Board& b) {
+    const Reader r(root, "");
+    r.only({"name", "models", "display", "gpio", "evdev", "attract", "button"});
+    b.name = r.string("name", b.name);
+    b.models = strings(root, "models", "");
+    if (const toml::table* t = section(root, "display")) {
+        const Reader d(*t, "display: ");
+        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud"});
+        b.device = d.string("device", b.device);
+        b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
+        b.scene = d.string("scene", b.scene);
+        b.engine = d.string("engine", b.engine);
+        if (b.engine != "fixed" && b.engine != "double" && b.engine != "float")
+            throw Bad{t->get("engine")->source(), "display: expected engine = \"fixed\", \"double\" or \"float\", found \"" + b.engine + "\""};
+        b.projection = d.string("projection", b.projection);
+        bool known = false;
+        for (geo::Projection pr : geo::kProjections) known = known || b.projection == geo::projection_name(pr);
+        if (!known)
+            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + b.projection + "\""};
+        b.antialias = d.boolean("antialias", b.antialias);
+        b.hud = d.boolean("hud", b.hud);
+    }
+    if (const toml::table* t = section(root, "gpio")) {
+        const Reader g(*t, "gpio: ");
+        g.only({"chip", "debounce_ms"});
+        b.chips = strings(*t, "chip", "gpio: ");
+        b.debounce_ms = static_cast<int>(g.integer("debounce_ms", b.debounce_ms, 0, 1000, "milliseconds"));
+    }
+    if (const toml::table* t = section(root, "evdev")) {
+        const Reader e(*t, "evdev: ");
+        e.only({"device", "grab"});
+        b.evdev_device = e.string("device", b.evdev_device);
+        b.grab = e.boolean("grab", b.grab);
+    }
+    if (const toml::table* t = section(root, "attract")) {
+        const Reader a(*t, "attract: ");
+        a.only({"idle_seconds", "sweep_seconds"});
+        b.idle_seconds = a.number("idle_seconds", b.idle_seconds, 0, 1e7, "seconds without a button; 0 turns attract mode off");
+        b.sweep_seconds = a.number("sweep_seconds", b.sweep_seconds, 4, 1e5, "seconds for K from -1 to +1");
+    }
+    if (const toml::array* buttons = tables(root, "button")) {
+        for (const toml::node& n : *buttons) {
+            const toml::table& t = *n.as_table();
+            const Reader br(t, "button: ");
+            br.only({"action", "gpio", "pin", "key"});
+            const toml::node* a = t.get("action");
+            if (!a) throw Bad{t.source(), "button: expected action = \"thrust\" (or left, right, curvature_up, curvature_down, preset, reset, projection, hud, quit), found none"};
+            BoardButton bb;
+            const std::string action = br.string("action", "");
+            if (!parse_control(action, bb.control))
+                throw Bad{a->source(), "button: unknown action \"" + action + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
+            const Reader named(t, "button " + quote(action) + ": ");
+            bb.gpio = static_cast<int>(named.integer("gpio", -1, 0, 1023, "line offset on the GPIO chip, the BCM number on a Raspberry Pi"));
+            bb.pin = static_cast<int>(named.integer("pin", 0, 1, 40, "physical pin on the 40-pin header"));
+            bb.key = static_cast<int>(named.integer("key", -1, 1, 767, "evdev key code, e.g. 57 for KEY_SPACE"));
+            if (bb.gpio < 0 && bb.key < 0)
+                throw Bad{t.source(), "button " + quote(action) + ": expected a gpio line or a key code (or both), found neither"};
+            for (const BoardButton& o : b.buttons) {
+                if (bb.gpio >= 0 && o.gpio == bb.gpio)
+                    throw Bad{t.get("gpio")->source(), "button " + quote(action) + ": gpio " + std::to_string(bb.gpio) +
+                                                           " is already the " + quote(control_name(o.control)) + " button"};
+                if (bb.key >= 0 && o.key == bb.key)
+                    throw Bad{t.get("key")->source(), "button " + quote(action) + ": key " + std::to_string(bb.key) +
+                                                          " is already the " + quote(control_name(o.control)) + " button"};
+            }
+            b.buttons.push_back(bb);
+        }
+    }
+}
+
+}  // namespace
+
+std::string BoardError::to_string() const {
+    std::ostringstream o;
+    o << file;
+    if (line > 0) o << ':' << line << ':' << column;
+    o << ": " << message;
+    return o.str();
+}
+
+bool parse_board(const std::string& text, const std::string& name, Board& out, BoardError& error) {
+    out = Board{};
+    out.file = name;
+    try {
+        const toml::table root = toml::parse(text, name);
+        read_board(root, out);
+        return true;
+    } catch (const toml::parse_error& e) {
+        error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
+                 "not valid TOML: " + std::string(e.description())};
+    } catch (const Bad& b) {
+        error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
+    }
+    return false;
+}
+
+bool load_board_file(const std::string& path, Board& out, BoardError& error) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = {path, 0, 0, "cannot read the board file: check the path, or name a board in boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic)"};
+        return false;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_board(text.str(), path, out, error);
+}
+
+}  // namespace noneuclid::world

@@ -1,0 +1,89 @@
+// Board files (TOML): what a kiosk is wired to and how it shows the world. One per board in
+// boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic); the README's kiosk section documents them.
+//
+//     name = "Raspberry Pi 4 Model B / 400"
+//     models = ["Raspberry Pi 4", "Raspberry Pi 400"]  # /proc/device-tree/model prefixes
+//     [display]
+//     device = "/dev/fb0"     # framebuffer
+//     fps = 60                # frame-rate cap (world time is always 1/60 s a frame)
+//     scene = "kiosk"         # built-in scene or scene file
+//     engine = "fixed"        # fixed, double, float
+//     projection = "equidistant"
+//     antialias = false
+//     hud = true
+//     [gpio]
+//     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
+//     debounce_ms = 10
+//     [evdev]
+//     device = ""             # empty: any key device that has the codes
+//     grab = true
+//     [attract]
+//     idle_seconds = 120      # no button for this long: the autopilot flies; 0: never
+//     sweep_seconds = 40      # one sweep of K from -1 to +1 (and as long back)
+//     [[button]]
+//     action = "thrust"       # world::Control names
+//     gpio = 17               # line offset on the chip (the BCM number on a Pi); optional
+//     pin = 11                # header pin, informational (1-40)
+//     key = 57                # evdev key code (KEY_SPACE); optional
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "world/controls.hpp"
+
+namespace noneuclid::world {
+
+struct BoardButton {
+    Control control = Control::thrust;
+    int gpio = -1;  // -1: not on GPIO
+    int pin = 0;    // 0: not given
+    int key = -1;   // -1: no key code
+};
+
+struct Board {
+    std::string name = "generic";
+    std::string file;  // where it was read from ("" for built-in defaults)
+    std::vector<std::string> models;
+    // [display]
+    std::string device = "/dev/fb0";
+    double fps = 60;
+    std::string scene = "kiosk";
+    std::string engine = "fixed";
+    std::string projection = "equidistant";
+    bool antialias = false;
+    bool hud = true;
+    // [gpio]
+    std::vector<std::string> chips;
+    int debounce_ms = 10;
+    // [evdev]
+    std::string evdev_device;
+    bool grab = true;
+    // [attract]
+    double idle_seconds = 120;
+    double sweep_seconds = 40;
+
+    std::vector<BoardButton> buttons;
+    bool has_gpio() const {
+        for (const BoardButton& b : buttons)
+            if (b.gpio >= 0) return true;
+        return false;
+    }
+    bool has_keys() const {
+        for (const BoardButton& b : buttons)
+            if (b.key >= 0) return true;
+        return false;
+    }
+};
+
+struct BoardError {
+    std::string file;
+    long line = 0, column = 0;
+    std::string message;
+    std::string to_string() const;  // "file:line:column: message"
+};
+
+bool parse_board(const std::string& text, const std::string& name, Board& out, BoardError& error);
+bool load_board_file(const std::string& path, Board& out, BoardError& error);
+
+}  // namespace noneuclid::world
