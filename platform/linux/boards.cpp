@@ -1,0 +1,78 @@
+#include "linux/boards.hpp"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace noneuclid::platform {
+namespace fs = std::filesystem;
+
+std::vector<std::string> board_dirs() {
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv("NONEUCLID_BOARDS"); env && *env) dirs.push_back(env);
+#ifdef NONEUCLID_BOARDS_INSTALL_DIR
+    dirs.push_back(NONEUCLID_BOARDS_INSTALL_DIR);
+#endif
+#ifdef NONEUCLID_BOARDS_SOURCE_DIR
+    dirs.push_back(NONEUCLID_BOARDS_SOURCE_DIR);
+#endif
+    return dirs;
+}
+
+bool load_board(const std::string& spec, world::Board& out, std::string& error) {
+    world::BoardError e;
+    const bool is_path = spec.find('/') != std::string::npos || (spec.size() > 5 && spec.ends_with(".toml"));
+    if (is_path) {
+        if (world::load_board_file(spec, out, e)) return true;
+        error = e.to_string();
+        return false;
+    }
+    std::string looked;
+    for (const std::string& d : board_dirs()) {
+        const fs::path p = fs::path(d) / (spec + ".toml");
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec)) {
+            if (world::load_board_file(p.string(), out, e)) return true;
+            error = e.to_string();
+            return false;
+        }
+        looked += (looked.empty() ? "" : ", ") + d;
+    }
+    error = "no board named '" + spec + "' in " + (looked.empty() ? std::string("any boards directory") : looked) +
+            ": use rpi-zero2w, rpi3, rpi4, rpi5 or generic, give a board file's path, or set NONEUCLID_BOARDS to the directory";
+    return false;
+}
+
+bool detect_board(world::Board& out, std::string& why, std::string& error) {
+    std::string model;
+    {
+        std::ifstream in("/proc/device-tree/model", std::ios::binary);
+        if (in) model.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        while (!model.empty() && (model.back() == '\0' || model.back() == '\n')) model.pop_back();
+    }
+    if (!model.empty()) {
+        for (const std::string& d : board_dirs()) {
+            std::error_code ec;
+            for (const fs::directory_entry& f : fs::directory_iterator(d, ec)) {
+                if (f.path().extension() != ".toml") continue;
+                world::Board b;
+                world::BoardError e;
+                if (!world::load_board_file(f.path().string(), b, e)) continue;
+                for (const std::string& m : b.models)
+                    if (!m.empty() && model.compare(0, m.size(), m) == 0) {
+                        out = b;
+                        why = "board " + f.path().stem().string() + " (" + f.path().string() + "), because this machine is a " + model;
+                        return true;
+                    }
+            }
+        }
+    }
+    if (!load_board("generic", out, error)) return false;
+    why = "board generic (" + out.file + "), because " +
+          (model.empty() ? std::string("this machine has no device-tree model") : "no board file lists the model '" + model + "'") +
+          "; choose one with --board";
+    return true;
+}
+
+}  // namespace noneuclid::platform

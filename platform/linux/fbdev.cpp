@@ -1,0 +1,239 @@
+// The framebuffer display and the console guard. See fbdev.hpp.
+#include "linux/fbdev.hpp"
+
+#include <fcntl.h>
+#include <linux/fb.h>
+#include <linux/kd.h>
+#include <linux/vt.h>
+#include <sys/ioctl.h>
+#include <sys/mman.h>
+#include <termios.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "render/blit.hpp"
+
+namespace noneuclid::platform {
+namespace {
+
+std::string errno_text(int e) { return std::strerror(e); }
+
+const char* format_name(const render::PixelFormat& f) {
+    using P = render::PixelFormat;
+    auto same = [&](const P& o) {
+        return f.bits_per_pixel == o.bits_per_pixel && f.red.offset == o.red.offset && f.red.length == o.red.length &&
+               f.green.offset == o.green.offset && f.green.length == o.green.length &&
+               f.blue.offset == o.blue.offset && f.blue.length == o.blue.length;
+    };
+    for (const P& o : {P::rgb565(), P::bgr565(), P::xrgb8888(), P::xbgr8888(), P::rgb888(), P::bgr888()})
+        if (same(o)) return o.name;
+    return "custom";
+}
+
+}  // namespace
+
+Fbdev::~Fbdev() {
+    if (map_) munmap(map_, map_len_);
+    if (fd_ >= 0) ::close(fd_);
+}
+
+bool Fbdev::open(const std::string& path, std::string& error) {
+    path_ = path;
+    fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd_ < 0) {
+        const int e = errno;
+        if (e == ENOENT || e == ENXIO || e == ENODEV)
+            error = "there is no framebuffer " + path + ": check the device (ls /dev/fb*), enable a display driver with fbdev emulation (on a Pi: dtoverlay=vc4-kms-v3d in config.txt), or use --display x11 or png";
+        else if (e == EACCES || e == EPERM)
+            error = "no permission to open the framebuffer " + path + ": add the user to the video group (sudo usermod -aG video $USER, then log in again) or run it as the noneuclid service";
+        else
+            error = "cannot open the framebuffer " + path + " (" + errno_text(e) + "): check that it is a framebuffer device";
+        return false;
+    }
+    fb_fix_screeninfo fix{};
+    fb_var_screeninfo var{};
+    if (ioctl(fd_, FBIOGET_FSCREENINFO, &fix) != 0 || ioctl(fd_, FBIOGET_VSCREENINFO, &var) != 0) {
+        error = path + " does not answer the framebuffer ioctls (" + errno_text(errno) + "): give --display fbdev:/dev/fbN a framebuffer device";
+        return false;
+    }
+    id_.assign(fix.id, strnlen(fix.id, sizeof fix.id));
+    format_.bits_per_pixel = static_cast<uint8_t>(var.bits_per_pixel);
+    format_.red = {static_cast<uint8_t>(var.red.offset), static_cast<uint8_t>(var.red.length)};
+    format_.green = {static_cast<uint8_t>(var.green.offset), static_cast<uint8_t>(var.green.length)};
+    format_.blue = {static_cast<uint8_t>(var.blue.offset), static_cast<uint8_t>(var.blue.length)};
+    format_.name = format_name(format_);
+    const bool truecolor = fix.type == FB_TYPE_PACKED_PIXELS &&
+                           (fix.visual == FB_VISUAL_TRUECOLOR || fix.visual == FB_VISUAL_DIRECTCOLOR);
+    if (!truecolor || var.grayscale > 1 || var.bits_per_pixel > 32 || !format_.supported() ||
+        var.red.msb_right || var.green.msb_right || var.blue.msb_right) {
+        char text[256];
+        std::snprintf(text, sizeof text,
+                      "%s (%s) is %u bits per pixel %s (red %u/%u, green %u/%u, blue %u/%u), and noneuclid draws only "
+                      "16, 24 or 32-bit true colour: set a 16- or 32-bit mode (fbset -depth 32, or on a Pi "
+                      "framebuffer_depth=32 in config.txt)",
+                      path.c_str(), id_.c_str(), var.bits_per_pixel, truecolor ? "true colour" : "palette or planar",
+                      var.red.offset, var.red.length, var.green.offset, var.green.length, var.blue.offset,
+                      var.blue.length);
+        error = text;
+        return false;
+    }
+    line_length_ = fix.line_length;
+    xoffset_ = static_cast<int>(var.xoffset);
+    yoffset_ = static_cast<int>(var.yoffset);
+    yres_virtual_ = static_cast<int>(var.yres_virtual);
+    const int w = static_cast<int>(var.xres), h = static_cast<int>(var.yres);
+    const std::size_t need = static_cast<std::size_t>(line_length_) * static_cast<std::size_t>(yoffset_ + h);
+    if (w <= 0 || h <= 0 || line_length_ < static_cast<std::ptrdiff_t>(w) * format_.bytes_per_pixel() || fix.smem_len < need) {
+        error = path + " reports an unusable geometry (" + std::to_string(w) + "x" + std::to_string(h) + ", line " +
+                std::to_string(line_length_) + " bytes, memory " + std::to_string(fix.smem_len) +
+                " bytes): set a mode with fbset, or check the display driver";
+        return false;
+    }
+    map_len_ = fix.smem_len;
+    void* m = mmap(nullptr, map_len_, PROT_READ | PROT_WRITE, MAP_SHARED, fd_, 0);
+    if (m == MAP_FAILED) {
+        map_ = nullptr;
+        error = "cannot map the framebuffer " + path + " into memory (" + errno_text(errno) + "): check the display driver";
+        return false;
+    }
+    map_ = static_cast<uint8_t*>(m);
+    // Two pages in the virtual screen and the driver pans: draw to the hidden one.
+    if (yres_virtual_ >= 2 * h && static_cast<std::size_t>(line_length_) * static_cast<std::size_t>(2 * h) <= map_len_) {
+        fb_var_screeninfo pan = var;
+        pan.xoffset = 0;
+        pan.yoffset = 0;
+        pan_ok_ = ioctl(fd_, FBIOPAN_DISPLAY, &pan) == 0;
+        if (pan_ok_) xoffset_ = yoffset_ = 0;
+    }
+    ioctl(fd_, FBIOBLANK, FB_BLANK_UNBLANK);  // failure is fine: not every driver blanks
+    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w) * format_.bytes_per_pixel();
+    back_pixels_.assign(static_cast<std::size_t>(stride) * static_cast<std::size_t>(h), 0);
+    back_ = render::Canvas(back_pixels_.data(), w, h, stride, format_);
+    return true;
+}
+
+render::Canvas Fbdev::page(int index) const {
+    uint8_t* base = map_ + (yoffset_ + index * back_.height()) * line_length_ + xoffset_ * format_.bytes_per_pixel();
+    return render::Canvas(base, back_.width(), back_.height(), line_length_, format_);
+}
+
+void Fbdev::present() {
+    if (pan_ok_) {
+        const int hidden = 1 - shown_page_;
+        render::copy_canvas(back_, page(hidden));
+        fb_var_screeninfo var{};
+        if (ioctl(fd_, FBIOGET_VSCREENINFO, &var) == 0) {
+            var.xoffset = 0;
+            var.yoffset = static_cast<unsigned>(hidden * back_.height());
+            if (ioctl(fd_, FBIOPAN_DISPLAY, &var) == 0) {
+                shown_page_ = hidden;
+                return;
+            }
+        }
+        pan_ok_ = false;  // stopped panning: single page from now on
+        render::copy_canvas(back_, page(shown_page_));
+        return;
+    }
+    if (vsync_ok_) {
+        uint32_t crtc = 0;
+        if (ioctl(fd_, FBIO_WAITFORVSYNC, &crtc) != 0) vsync_ok_ = false;  // ENOTTY, EBUSY: pace by timer
+    }
+    render::copy_canvas(back_, page(shown_page_));
+}
+
+std::string Fbdev::describe() const {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s: %s, %dx%d, %d bpp %s (red %d/%d, green %d/%d, blue %d/%d), line %td bytes, offset %d,%d, "
+                  "virtual height %d, %s",
+                  path_.c_str(), id_.empty() ? "(no id)" : id_.c_str(), back_.width(), back_.height(),
+                  format_.bits_per_pixel, format_.name, format_.red.offset, format_.red.length, format_.green.offset,
+                  format_.green.length, format_.blue.offset, format_.blue.length, line_length_, xoffset_, yoffset_,
+                  yres_virtual_, pan_ok_ ? "two pages, panning" : "one page (copy per frame)");
+    return text;
+}
+
+// ---- the console -----------------------------------------------------------------------
+
+namespace {
+
+// Saved at start, restored at exit or from a signal handler (so: plain globals, and only
+// async-signal-safe calls in restore).
+int g_tty = -1;
+long g_kd_mode = KD_TEXT;
+vt_mode g_vt_mode{};
+termios g_termios{};
+bool g_have_termios = false;
+volatile std::sig_atomic_t g_restored = 1;
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+void restore_console() {
+    if (g_restored) return;
+    g_restored = 1;
+    ioctl(g_tty, KDSETMODE, g_kd_mode);
+    ioctl(g_tty, VT_SETMODE, &g_vt_mode);
+    if (g_have_termios) tcsetattr(g_tty, TCSANOW, &g_termios);
+    static const char show_cursor[] = "\033[?25h";
+    if (write(g_tty, show_cursor, sizeof show_cursor - 1) < 0) {
+    }
+}
+
+void on_stop(int sig) {
+    g_stop_signal = sig;
+    ConsoleGuard::stop_requested = 1;
+}
+
+void on_crash(int sig) {
+    restore_console();
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+}  // namespace
+
+volatile std::sig_atomic_t ConsoleGuard::stop_requested = 0;
+int ConsoleGuard::stop_signal() { return g_stop_signal; }
+
+ConsoleGuard::ConsoleGuard() {
+    struct sigaction stop{};
+    stop.sa_handler = on_stop;  // no SA_RESTART: poll() and nanosleep return EINTR at once
+    sigemptyset(&stop.sa_mask);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(s, &stop, nullptr);
+
+    long mode = 0;
+    if (!isatty(STDIN_FILENO) || ioctl(STDIN_FILENO, KDGETMODE, &mode) != 0) {
+        note = "stdin is not a virtual console, so the console is left as it is (fbcon may draw its cursor over the picture; the service runs on tty1)";
+        return;
+    }
+    g_tty = STDIN_FILENO;
+    g_kd_mode = mode;
+    ioctl(g_tty, VT_GETMODE, &g_vt_mode);
+    g_have_termios = tcgetattr(g_tty, &g_termios) == 0;
+    g_restored = 0;
+    struct sigaction crash{};
+    crash.sa_handler = on_crash;
+    sigemptyset(&crash.sa_mask);
+    for (int s : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT}) sigaction(s, &crash, nullptr);
+    if (ioctl(g_tty, KDSETMODE, KD_GRAPHICS) != 0) {
+        note = "could not put the console in graphics mode (" + errno_text(errno) + "): text may show through";
+    } else {
+        note = "console in graphics mode (restored at exit)";
+    }
+    if (g_have_termios) {
+        termios raw = g_termios;
+        raw.c_lflag &= static_cast<tcflag_t>(~(ECHO | ICANON));
+        tcsetattr(g_tty, TCSANOW, &raw);
+    }
+    static const char hide_cursor[] = "\033[?25l";
+    if (write(g_tty, hide_cursor, sizeof hide_cursor - 1) < 0) {
+    }
+}
+
+ConsoleGuard::~ConsoleGuard() { restore_console(); }
+
+bool ConsoleGuard::owned() const { return g_tty >= 0; }
+
+}  // namespace noneuclid::platform
