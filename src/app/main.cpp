@@ -1,5 +1,5 @@
-// noneuclid: command-line front end. Commands: run (a window, or the demo to PNG files
-// headless), demo, render (PNG), dump (JSON Lines), accuracy (the fixed-point core and the
+// noneuclid: command-line front end. Commands: run (the kiosk on the framebuffer, a window, or
+// the demo to PNG files headless), buttons (print what the kiosk's buttons send), demo, render (PNG), dump (JSON Lines), accuracy (the fixed-point core and the
 // geometry against their references). `noneuclid --help` lists them with their options.
 #if NONEUCLID_HAVE_DESKTOP
 #include "desktop/console_font.hpp"
@@ -11,11 +11,20 @@
 #include "desktop/x11_window.hpp"
 #endif
 #include "desktop/display_choice.hpp"
+#if NONEUCLID_HAVE_FBDEV
+#include "linux/boards.hpp"
+#include "linux/kiosk.hpp"
+#endif
+#if NONEUCLID_HAVE_INPUT
+#include "linux/input.hpp"
+#endif
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <system_error>
 #include <string>
 #include <vector>
@@ -52,8 +61,12 @@ void print_help(std::FILE* out) {
                  "  dump              run a scene and write its state as JSON Lines, one line per\n"
                  "                    frame, frame 0 being the initial state\n"
                  "  render            run a scene and write its last frame as a PNG picture\n"
-                 "  run               run a scene live: an X11 window when DISPLAY is set, else\n"
-                 "                    the demo's PNG files (see README, 'Desktop', for the keys)\n"
+                 "  run               run a scene live: an X11 window when DISPLAY is set, the\n"
+                 "                    framebuffer and the board's buttons on a console (the\n"
+                 "                    kiosk), else the demo's PNG files (README: 'Desktop', 'Kiosk')\n"
+                 "  buttons           print each press and release of the board's buttons or keys\n"
+                 "                    (for checking the wiring); --events N, --timeout SECONDS,\n"
+                 "                    --board, --input as for run\n"
                  "\n"
                  "options for accuracy:\n"
                  "  --samples N       evenly spaced samples per row (default 262144)\n"
@@ -87,11 +100,20 @@ void print_help(std::FILE* out) {
                  "                    the built-in one\n"
                  "\n"
                  "options for run:\n"
-                 "  --display D       x11, fbdev (comes with the kiosk: renders PNGs for now) or\n"
+                 "  --display D       x11, fbdev[:/dev/fbN] (default /dev/fb0, or the board's) or\n"
                  "                    png (the demo); default x11 if DISPLAY is set, else fbdev on\n"
                  "                    a framebuffer console, else png\n"
-                 "  --scene, --curvature, --engine, --projection, --size (window, default 800x480),\n"
-                 "  --aa              as above\n"
+                 "  --board NAME|FILE the kiosk's board file: rpi-zero2w, rpi3, rpi4, rpi5, generic\n"
+                 "                    or a path (default: detected from the device-tree model)\n"
+                 "  --input I         fbdev only: gpio (libgpiod), evdev (key devices), none, or\n"
+                 "                    auto (default: the board's GPIO buttons and, if found, keys)\n"
+                 "  --attract SECONDS fbdev only: attract mode after this long without a button\n"
+                 "                    (default: the board's, 120); 0 turns it off\n"
+                 "  --record FILE     fbdev only: write every action as it took effect, as an\n"
+                 "                    actions file that render --actions replays exactly\n"
+                 "  --scene, --curvature, --engine, --projection, --aa   as above (fbdev: the\n"
+                 "                    board's [display] gives the defaults)\n"
+                 "  --size WxH        the window's size (default 800x480; fbdev uses the mode's)\n"
                  "  --frames N        quit after N frames (default: when the window is closed)\n"
                  "  --fps CAP         frame rate cap (default 60); world time is 1/60 s a frame\n"
                  "  --screenshot F    at exit, read the window back from the X server into F.png\n"
@@ -515,17 +537,132 @@ int demo_command(int argc, char** argv, int i) {
 }
 
 // `noneuclid run`: the scene live in a window (X11), or the demo's PNG files without one.
+#if NONEUCLID_HAVE_FBDEV
+// The board: --board, else the one matching this machine, else generic. Exits 2 with one
+// sentence if it cannot be read.
+noneuclid::world::Board board_for(const std::string& spec) {
+    noneuclid::world::Board board;
+    std::string error, why;
+    if (!spec.empty()) {
+        if (!noneuclid::platform::load_board(spec, board, error)) usage_error(error + ".");
+        std::fprintf(stderr, "noneuclid: board %s (%s)\n", board.name.c_str(), board.file.c_str());
+    } else {
+        if (!noneuclid::platform::detect_board(board, why, error)) usage_error(error + ".");
+        std::fprintf(stderr, "noneuclid: %s.\n", why.c_str());
+    }
+    return board;
+}
+#endif
+
+#if NONEUCLID_HAVE_INPUT
+// The board's buttons as input sources: `mode` gpio, evdev, none or auto (GPIO if the board
+// wires any, plus key devices if it names keys and one is present). Returns false after one
+// sentence on stderr.
+bool open_inputs(const noneuclid::world::Board& b, const std::string& mode,
+                 std::vector<std::unique_ptr<noneuclid::platform::InputSource>>& out) {
+    namespace p = noneuclid::platform;
+    if (mode == "none") return true;
+    const bool want_gpio = mode == "gpio" || (mode == "auto" && b.has_gpio());
+    const bool want_keys = mode == "evdev" || (mode == "auto" && b.has_keys());
+    if (mode == "gpio" && !b.has_gpio()) {
+        std::fprintf(stderr, "noneuclid: the board %s (%s) wires no GPIO buttons: add 'gpio = N' to its [[button]] tables, or use --input evdev.\n",
+                     b.name.c_str(), b.file.c_str());
+        return false;
+    }
+    if (mode == "evdev" && !b.has_keys()) {
+        std::fprintf(stderr, "noneuclid: the board %s (%s) names no key codes: add 'key = N' to its [[button]] tables, or use --input gpio.\n",
+                     b.name.c_str(), b.file.c_str());
+        return false;
+    }
+    std::string error;
+    if (want_gpio) {
+        p::GpioConfig g;
+        g.chips = b.chips;
+        g.debounce_ms = static_cast<unsigned>(b.debounce_ms);
+        for (const auto& bb : b.buttons)
+            if (bb.gpio >= 0) g.buttons.push_back({bb.control, static_cast<unsigned>(bb.gpio), bb.pin});
+        auto src = p::open_gpio(g, error);
+        if (!src) {
+            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+            return false;
+        }
+        std::fprintf(stderr, "noneuclid: %s\n", src->describe().c_str());
+        out.push_back(std::move(src));
+    }
+    if (want_keys) {
+        p::EvdevConfig e;
+        e.device = b.evdev_device;
+        e.grab = b.grab;
+        for (const auto& bb : b.buttons)
+            if (bb.key >= 0) e.keys.push_back({bb.control, static_cast<unsigned>(bb.key)});
+        auto src = p::open_evdev(e, error);
+        if (!src) {
+            if (mode == "evdev" || !want_gpio) {
+                std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+                return false;
+            }
+            std::fprintf(stderr, "noneuclid: no keys (%s); the GPIO buttons are enough.\n", error.c_str());
+        } else {
+            std::fprintf(stderr, "noneuclid: %s\n", src->describe().c_str());
+            out.push_back(std::move(src));
+        }
+    }
+    return true;
+}
+#endif
+
+std::string parse_input_mode(const std::string& v) {
+    if (v == "auto" || v == "gpio" || v == "evdev" || v == "none") return v;
+    usage_error("--input must be auto, gpio, evdev or none, not '" + v + "'.");
+}
+
+// `noneuclid buttons`: what each button or key sends, one line per event.
+int buttons_command(int argc, char** argv, int i) {
+    std::string board_spec, mode = "auto";
+    long events = 0;
+    double timeout = 0;
+    for (; i < argc; ++i) {
+        const std::string opt = argv[i];
+        auto value = [&]() -> const char* {
+            if (i + 1 >= argc) usage_error(opt + " needs a value; see 'noneuclid --help'.");
+            return argv[++i];
+        };
+        if (opt == "-h" || opt == "--help") return print_help(stdout), 0;
+        else if (opt == "--board") board_spec = value();
+        else if (opt == "--input") mode = parse_input_mode(value());
+        else if (opt == "--events") events = static_cast<long>(parse_count("--events", value(), 1, 1000000000));
+        else if (opt == "--timeout") timeout = parse_number("--timeout", value(), 0.001, 1e7);
+        else usage_error("unknown option '" + opt + "' for buttons; see 'noneuclid --help'.");
+    }
+#if NONEUCLID_HAVE_FBDEV && NONEUCLID_HAVE_INPUT
+    const noneuclid::world::Board board = board_for(board_spec);
+    if (mode == "none") usage_error("buttons needs an input: --input gpio, evdev or auto.");
+    std::vector<std::unique_ptr<noneuclid::platform::InputSource>> inputs;
+    if (!open_inputs(board, mode, inputs)) return 2;
+    if (inputs.size() != 1) {
+        if (inputs.empty()) usage_error("the board has no buttons to listen to: give it [[button]] tables.");
+        std::fprintf(stderr, "noneuclid: listening to the first input only; choose with --input gpio or evdev.\n");
+    }
+    return noneuclid::platform::print_input_events(*inputs.front(), events, timeout, stdout);
+#else
+    (void)events, (void)timeout;
+    usage_error("this build has no kiosk input (it was built for " + std::string(board_spec.empty() ? "a" : "a") +
+                " system without Linux GPIO/evdev support): build it on Linux with libgpiod-dev installed.");
+#endif
+}
+
 int run_command(int argc, char** argv, int i) {
     using noneuclid::platform::DisplayKind;
-    std::string display, scene_name = "kiosk";
-    bool has_curvature = false;
+    std::string display, fb_device, board_spec, input_mode = "auto", record;
+    std::optional<std::string> scene_name, engine;
+    std::optional<noneuclid::geo::Projection> projection;
+    std::optional<double> fps, attract;
+    std::optional<bool> aa, hud;
+    bool has_curvature = false, stats = false;
     double curvature = 0;
     long frames = 0;
-    double fps = 60;
     int width = 800, height = 480;
-    bool aa = false, hud = true, stats = false;
-    std::string engine = "fixed", screenshot;
-    noneuclid::geo::Projection projection = noneuclid::geo::Projection::azimuthal_equidistant;
+    std::string screenshot;
     for (; i < argc; ++i) {
         const std::string opt = argv[i];
         auto value = [&]() -> const char* {
@@ -537,8 +674,13 @@ int run_command(int argc, char** argv, int i) {
             return 0;
         } else if (opt == "--display") {
             display = value();
+            if (display.rfind("fbdev:", 0) == 0) {
+                fb_device = display.substr(6);
+                display = "fbdev";
+                if (fb_device.empty()) usage_error("--display fbdev: needs a device after the colon, e.g. fbdev:/dev/fb1.");
+            }
             if (display != "x11" && display != "fbdev" && display != "png")
-                usage_error("--display must be x11, fbdev or png, not '" + display + "'.");
+                usage_error("--display must be x11, fbdev, fbdev:/dev/fbN or png, not '" + display + "'.");
         } else if (opt == "--scene") {
             scene_name = value();
         } else if (opt == "--curvature") {
@@ -562,6 +704,14 @@ int run_command(int argc, char** argv, int i) {
             projection = parse_projection(value());
         } else if (opt == "--screenshot") {
             screenshot = value();
+        } else if (opt == "--board") {
+            board_spec = value();
+        } else if (opt == "--input") {
+            input_mode = parse_input_mode(value());
+        } else if (opt == "--record") {
+            record = value();
+        } else if (opt == "--attract") {
+            attract = parse_number("--attract", value(), 0, 1e7);
         } else {
             usage_error("unknown option '" + opt + "' for run; see 'noneuclid --help'.");
         }
@@ -577,21 +727,52 @@ int run_command(int argc, char** argv, int i) {
     }
     const char* kind_name = kind == DisplayKind::x11 ? "x11" : (kind == DisplayKind::fbdev ? "fbdev" : "png");
     std::fprintf(stderr, "noneuclid: display %s, because %s.\n", kind_name, reason.c_str());
-    if (kind == DisplayKind::fbdev) {
-        std::fprintf(stderr, "noneuclid: fbdev output comes with the kiosk; rendering the demo to PNG files instead.\n");
-        kind = DisplayKind::png;
-    }
+    if (kind != DisplayKind::fbdev && (!record.empty() || !board_spec.empty() || attract || input_mode != "auto"))
+        usage_error("--board, --input, --attract and --record are for the framebuffer kiosk: add --display fbdev.");
     if (kind == DisplayKind::png) return demo_command(argc, argv, argc);
+    if (kind == DisplayKind::fbdev) {
+#if NONEUCLID_HAVE_FBDEV
+        const noneuclid::world::Board board = board_for(board_spec);
+        noneuclid::world::Scene scene;
+        if (!load_scene(scene_name.value_or(board.scene), noneuclid::world::SceneParams{}, scene)) return 2;
+        if (has_curvature) scene.curvature = curvature;
+        noneuclid::platform::KioskOptions o;
+        o.device = fb_device.empty() ? board.device : fb_device;
+        o.frames = frames;
+        o.fps = fps.value_or(board.fps);
+        o.antialias = aa.value_or(board.antialias);
+        o.hud = hud.value_or(board.hud);
+        o.engine = engine.value_or(board.engine);
+        o.projection = projection ? *projection : parse_projection(board.projection.c_str());
+        o.attract.idle_seconds = attract.value_or(board.idle_seconds);
+        o.attract.sweep_seconds = board.sweep_seconds;
+        o.record = record;
+        o.stats = stats;
+        std::vector<std::unique_ptr<noneuclid::platform::InputSource>> inputs;
+#if NONEUCLID_HAVE_INPUT
+        if (!open_inputs(board, input_mode, inputs)) return 2;
+#else
+        if (input_mode == "gpio" || input_mode == "evdev")
+            usage_error("this build has no kiosk input (libgpiod-dev was not found when it was built): install it and rebuild, or use --input none.");
+#endif
+        if (inputs.empty()) std::fprintf(stderr, "noneuclid: no buttons: the world runs on its own (attract mode after %.0f s).\n", o.attract.idle_seconds);
+        return noneuclid::platform::run_fbdev(scene, o, inputs);
+#else
+        usage_error("this build has no framebuffer display (it was not built for Linux): use --display x11 or png.");
+#endif
+    }
     noneuclid::world::Scene scene;
-    if (!load_scene(scene_name, noneuclid::world::SceneParams{}, scene)) return 2;
+    if (!load_scene(scene_name.value_or("kiosk"), noneuclid::world::SceneParams{}, scene)) return 2;
     if (has_curvature) scene.curvature = curvature;
 #if NONEUCLID_HAVE_X11
     noneuclid::platform::RunOptions o;
-    o.width = width, o.height = height, o.frames = frames, o.fps = fps, o.antialias = aa, o.hud = hud;
-    o.engine = engine, o.projection = projection, o.screenshot = screenshot, o.stats = stats;
+    o.width = width, o.height = height, o.frames = frames, o.fps = fps.value_or(60), o.antialias = aa.value_or(false);
+    o.hud = hud.value_or(true);
+    o.engine = engine.value_or("fixed"), o.projection = projection.value_or(noneuclid::geo::Projection::azimuthal_equidistant);
+    o.screenshot = screenshot, o.stats = stats;
     return noneuclid::platform::run_x11(scene, o);
 #else
-    (void)frames, (void)fps, (void)width, (void)height, (void)aa, (void)hud, (void)stats, (void)projection;
+    (void)frames, (void)width, (void)height, (void)stats;
     usage_error("this build has no X11 window (Xlib was not found when it was built): install libx11-dev and libxext-dev and rebuild, or use --display png.");
 #endif
 }
@@ -600,6 +781,7 @@ int main(int argc, char** argv) {
     if (argc == 1) return demo_command(argc, argv, 1);
     if (std::strcmp(argv[1], "demo") == 0) return demo_command(argc, argv, 2);
     if (std::strcmp(argv[1], "run") == 0) return run_command(argc, argv, 2);
+    if (std::strcmp(argv[1], "buttons") == 0) return buttons_command(argc, argv, 2);
     noneuclid::fx::AccuracyOptions options;
     int i = 1;
     if (i < argc && std::strcmp(argv[i], "dump") == 0) return dump_command(argc, argv, i + 1);
