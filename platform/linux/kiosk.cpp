@@ -23,20 +23,6 @@ int64_t now_ns() {
     return static_cast<int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec;
 }
 
-// Writes world actions in the actions-file format (world/actions.hpp) that
-// `noneuclid render --actions` replays.
-class FileRecorder final : public render::ActionRecorder {
-public:
-    explicit FileRecorder(std::FILE* f) : f_(f) {}
-    void action(double time, bool press, world::Action a) override {
-        std::fprintf(f_, "%.9f %s %s\n", time, press ? "press" : "release", world::action_name(a));
-    }
-    void note(double time, const char* what) override { std::fprintf(f_, "# %.9f %s\n", time, what); }
-
-private:
-    std::FILE* f_;
-};
-
 template <class W>
 int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vector<std::unique_ptr<InputSource>>& inputs,
          render::ActionRecorder* recorder) {
@@ -133,7 +119,7 @@ int run_fbdev(const world::Scene& scene, const KioskOptions& o, std::vector<std:
                           "# noneuclid render --scene %s --engine %s --actions THIS_FILE --frames N\n",
                      scene.name.c_str(), o.engine.c_str(), scene.name.c_str(), o.engine.c_str());
     }
-    FileRecorder recorder(rec);
+    render::FileRecorder recorder(rec);
     int status = 0;
     {
         ConsoleGuard console;

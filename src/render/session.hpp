@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <iterator>
 
 #include "render/draw_world.hpp"
@@ -24,6 +25,20 @@ public:
     virtual ~ActionRecorder() = default;
     virtual void action(double time, bool press, world::Action a) = 0;
     virtual void note(double time, const char* what) = 0;  // non-world controls, attract on/off
+};
+
+// Writes world actions in the actions-file format (world/actions.hpp) that
+// `noneuclid render --actions` replays; other controls and attract mode as comments.
+class FileRecorder final : public ActionRecorder {
+public:
+    explicit FileRecorder(std::FILE* f) : f_(f) {}
+    void action(double time, bool press, world::Action a) override {
+        std::fprintf(f_, "%.9f %s %s\n", time, press ? "press" : "release", world::action_name(a));
+    }
+    void note(double time, const char* what) override { std::fprintf(f_, "# %.9f %s\n", time, what); }
+
+private:
+    std::FILE* f_;
 };
 
 struct SessionOptions {
