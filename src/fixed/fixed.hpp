@@ -19,6 +19,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <type_traits>
 
 namespace noneuclid::fx {
 
@@ -26,6 +27,12 @@ namespace detail {
 constexpr int32_t saturate32(int64_t v) noexcept {
     return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));
 }
+// n / d rounded to nearest (ties away from zero) for d > 0 and |n| < 2^62, exact, without a
+// 64-bit divide instruction (detail::div_round<false> in math.hpp, out of line in tables.cpp).
+// 32-bit ARM has no such instruction: there operator/ uses this instead of gcc's
+// __aeabi_ldivmod (~400 instructions); the results are the same bit for bit.
+int64_t div_round_portable(int64_t n, uint32_t d) noexcept;
+inline constexpr bool kNativeDivide64 = sizeof(void*) >= 8;
 // Arithmetic shift right with rounding to nearest (ties toward +infinity). s in [1, 62].
 constexpr int64_t round_shift(int64_t v, int s) noexcept {
     return (v + (int64_t{1} << (s - 1))) >> s;
@@ -97,6 +104,13 @@ public:
     // Quotient rounded to nearest; x/0 saturates with the sign of x, 0/0 = 0.
     friend constexpr Fixed operator/(Fixed a, Fixed b) noexcept {
         if (b.raw_ == 0) return a.raw_ > 0 ? max() : (a.raw_ < 0 ? min() : Fixed{});
+        if constexpr (!detail::kNativeDivide64) {
+            if (!std::is_constant_evaluated()) {
+                const int64_t na = int64_t{a.raw_} * one_raw;
+                const uint32_t d = b.raw_ < 0 ? 0u - static_cast<uint32_t>(b.raw_) : static_cast<uint32_t>(b.raw_);
+                return from_raw(detail::saturate32(detail::div_round_portable(b.raw_ < 0 ? -na : na, d)));
+            }
+        }
         int64_t n = int64_t{a.raw_} * one_raw;
         int64_t d = b.raw_;
         if (d < 0) { n = -n; d = -d; }

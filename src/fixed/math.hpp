@@ -61,7 +61,15 @@ constexpr fixed q32_to_fixed(int64_t v) noexcept {
 // 32x32->64 products. isqrt64 and div_round are exact either way, so both paths give the same
 // results; the template parameter lets the tests run the portable path on any machine. (On
 // 32-bit targets atan2's tangent comes within a few units of 2^-32 instead: 1e-9 rad.)
-inline constexpr bool kNativeDivide64 = sizeof(void*) >= 8;
+// (kNativeDivide64 is declared in fixed.hpp, where operator/ uses it too.)
+//
+// Where the geometry divides many times per frame (a quotient per tessellated point, a square
+// root's Newton step, atan2's tangent), kDivideInstruction says which kernel to use: the
+// hardware's 64-bit divide where there is one, else the reciprocal (table seed, Newton step,
+// an exact correction on the remainder). Both give the same bits. (Measured on x86-64, AMD
+// EPYC, with bench_geometry: the reciprocal was 20-50% slower per point than the divide
+// instruction, so x86-64 keeps the instruction.)
+inline constexpr bool kDivideInstruction = kNativeDivide64;
 
 // 2^62 / d for d in [2^31, 2^32): result in (2^30, 2^31], relative error < 2^-30.
 inline uint32_t recip_q62(uint32_t d) noexcept {
@@ -109,9 +117,63 @@ inline int64_t div_round(int64_t n, uint32_t d) noexcept {
     return n < 0 ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
 }
 
+// Division of many numerators by one divisor, exactly as fixed::operator/ rounds (to nearest,
+// ties away from zero, saturating): the reciprocal (table seed + Newton) is taken once, then
+// each quotient costs a 32x32 -> 64 product or two and an exact correction on the remainder,
+// instead of a 64-bit divide (x86: tens of cycles; 32-bit ARM: a ~400-instruction libcall).
+// The geometry divides every tessellated point of an edge by the same Sf(K d^2).
+template <bool Native = kDivideInstruction>
+class Divisor {
+public:
+    explicit Divisor(int32_t d_raw) noexcept
+        : neg_(d_raw < 0), d_(d_raw < 0 ? 0u - static_cast<uint32_t>(d_raw) : static_cast<uint32_t>(d_raw)) {
+        if (d_ == 0) return;
+        sh_ = std::countl_zero(d_);
+        r_ = recip_q62(d_ << sh_);  // ~ 2^(62 + sh) / d
+    }
+    // (x_raw * 2^16) / d rounded to nearest, saturated to 32 bits: fixed(x) / fixed(d).
+    int32_t quotient_q16(int32_t x_raw) const noexcept {
+        if (d_ == 0) return x_raw > 0 ? INT32_MAX : (x_raw < 0 ? INT32_MIN : 0);
+        const bool neg = (x_raw < 0) != neg_;
+        const uint64_t a = static_cast<uint64_t>(x_raw < 0 ? 0 - int64_t{x_raw} : int64_t{x_raw}) << 16;  // < 2^47
+        uint64_t q;
+        if constexpr (Native) {
+            q = a / d_ + (2 * (a % d_) >= d_);
+        } else {
+            const uint64_t nr = (a >> 32) * r_ + (((a & 0xFFFFFFFFu) * r_) >> 32);  // (a r) / 2^32
+            q = sh_ <= 30 ? nr >> (30 - sh_) : nr << (sh_ - 30);
+            // Relative error < 2^-29: within 8 units of a / d while it is below 2^32, and
+            // beyond that the result saturates anyway.
+            if (q >= (uint64_t{1} << 32)) return neg ? INT32_MIN : INT32_MAX;
+            int64_t rem = static_cast<int64_t>(a) - static_cast<int64_t>(q * d_);
+            while (rem < 0) --q, rem += d_;
+            while (rem >= static_cast<int64_t>(d_)) ++q, rem -= d_;
+            q += 2 * static_cast<uint64_t>(rem) >= d_;
+        }
+        const int64_t s = neg ? -static_cast<int64_t>(q) : static_cast<int64_t>(q);
+        return saturate32(s);
+    }
+
+private:
+    bool neg_;
+    uint32_t d_;
+    int sh_ = 0;
+    uint64_t r_ = 0;
+};
+
+// floor(n / d) for d > 0 and a quotient below 2^33, exact: the reciprocal's estimate (within
+// 16 units there) corrected on the remainder.
+inline uint64_t udiv_floor_reciprocal(uint64_t n, uint32_t d) noexcept {
+    uint64_t q = udiv_approx<false>(n, d);
+    int64_t rem = static_cast<int64_t>(n - q * d);  // small: the estimate is close
+    while (rem < 0) --q, rem += d;
+    while (rem >= static_cast<int64_t>(d)) ++q, rem -= d;
+    return q;
+}
+
 // floor(sqrt(v)) for any 64-bit v: table seed (18 bits), one Newton step taken on the small
 // remainder (so the reciprocal's own error barely matters), exact fix-up.
-template <bool Native = kNativeDivide64>
+template <bool Native = kDivideInstruction>
 inline uint32_t isqrt64(uint64_t v) noexcept {
     if (v == 0) return 0;
     const int sh = std::countl_zero(v) & ~1;
@@ -299,8 +361,10 @@ inline angle atan2_angle(int32_t y_raw, int32_t x_raw) noexcept {
     // tan of the octant angle, num / den in Q32 (<= 1; on 32-bit targets, through the
     // reciprocal of den normalised to [2^31, 2^32), within a few units of 2^-32).
     uint64_t t;
-    if constexpr (detail::kNativeDivide64) {
+    if constexpr (detail::kNativeDivide64 && detail::kDivideInstruction) {
         t = (uint64_t{num} << 32) / den;
+    } else if constexpr (detail::kNativeDivide64) {
+        t = detail::udiv_floor_reciprocal(uint64_t{num} << 32, den);  // the same quotient
     } else {
         const int sh = std::countl_zero(den);
         t = (uint64_t{num << sh} * detail::recip_q62(den << sh)) >> 30;
@@ -518,6 +582,21 @@ inline fixed hypot(fixed x, fixed y) noexcept {
     uint64_t r = detail::isqrt64(v);
     if (v - r * r > r) ++r;
     return fixed::from_raw(detail::saturate32(static_cast<int64_t>(r)));
+}
+
+// x / d for many x and one d, bit for bit the same as operator/ (detail::Divisor). Found by
+// argument-dependent lookup: geometry code writes `const auto by_d = divisor(d); by_d(x)`.
+struct fixed_divisor {
+    detail::Divisor<> div;
+    fixed operator()(fixed x) const noexcept { return fixed::from_raw(div.quotient_q16(x.raw())); }
+};
+inline fixed_divisor divisor(fixed d) noexcept { return {detail::Divisor<>(d.raw())}; }
+// One quotient, a / b, the same bits as operator/ (through the reciprocal where that is faster).
+inline fixed quotient(fixed a, fixed b) noexcept { return fixed::from_raw(detail::Divisor<>(b.raw()).quotient_q16(a.raw())); }
+// x / 4, rounded as operator/ rounds (to nearest, ties away from zero).
+inline fixed quarter(fixed x) noexcept {
+    const int32_t r = x.raw();
+    return fixed::from_raw(r >= 0 ? static_cast<int32_t>((int64_t{r} + 2) >> 2) : static_cast<int32_t>(-((2 - int64_t{r}) >> 2)));
 }
 
 }  // namespace noneuclid::fx

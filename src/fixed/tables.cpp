@@ -3,6 +3,7 @@
 #include "fixed/tables.hpp"
 
 #include "fixed/constexpr_math.hpp"
+#include "fixed/math.hpp"
 
 namespace noneuclid::fx::tables {
 namespace {
@@ -75,3 +76,7 @@ constexpr std::array<int32_t, (3 << (kATfStepBits - 1)) + 2> atf_q30 =
     });
 
 }  // namespace noneuclid::fx::tables
+
+namespace noneuclid::fx::detail {
+int64_t div_round_portable(int64_t n, uint32_t d) noexcept { return div_round<false>(n, d); }
+}  // namespace noneuclid::fx::detail

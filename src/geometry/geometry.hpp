@@ -72,12 +72,13 @@ T AT_K(T K, T t) {
 template <class T>
 T arc_K(T K, T s, T c) {
     using std::sqrt;
+    // (quotient and quarter are a / b and x / 4, bit for bit; fx's avoid a 64-bit divide.)
     if (c >= T(0)) {
-        const T w = T(2) * s / (T(1) + c);  // 2 T_K(r/2)
-        return mul_ATf(w, K * w * w / T(4));
+        const T w = quotient(T(2) * s, T(1) + c);  // 2 T_K(r/2)
+        return mul_ATf(w, quarter(K * w * w));
     }
-    const T w = T(2) * s / (T(1) - c);
-    return pi_v<T> / sqrt(K) - mul_ATf(w, K * w * w / T(4));
+    const T w = quotient(T(2) * s, T(1) - c);
+    return pi_v<T> / sqrt(K) - mul_ATf(w, quarter(K * w * w));
 }
 
 template <class T>
@@ -230,11 +231,26 @@ void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
     }
     const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
     out(0, p);
-    for (int k = 1; k < n; ++k) {
-        const T t = T(k) / T(n), u = T(n - k) / T(n);
-        const T a = u * Sf(K * (u * d) * (u * d)) / sfd;
-        const T b = t * Sf(K * (t * d) * (t * d)) / sfd;
-        out(k, to_polar(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}));
+    // The same arithmetic as t = T(k)/T(n), a = u Sf(...) / sfd, but in fixed point without a
+    // 64-bit divide per point: the fractions are carried from k to k, and sfd's reciprocal is
+    // taken once per edge (the quotients are bit for bit those of operator/).
+    if (n > 1 && n < 32768) {
+        Fractions<T> f(n);
+        const auto by_sfd = divisor(sfd);
+        for (int k = 1; k < n; ++k) {
+            f.next();
+            const T t = f.t(k), u = f.u(k);
+            const T a = by_sfd(u * Sf(K * (u * d) * (u * d)));
+            const T b = by_sfd(t * Sf(K * (t * d) * (t * d)));
+            out(k, to_polar(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}));
+        }
+    } else {
+        for (int k = 1; k < n; ++k) {
+            const T t = T(k) / T(n), u = T(n - k) / T(n);
+            const T a = u * Sf(K * (u * d) * (u * d)) / sfd;
+            const T b = t * Sf(K * (t * d) * (t * d)) / sfd;
+            out(k, to_polar(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}));
+        }
     }
     out(n, q);
 }

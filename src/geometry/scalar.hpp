@@ -93,6 +93,54 @@ inline double wrap_pi(double a) { return std::remainder(a, 2 * pi_v<double>); }
 inline float wrap_pi(float a) { return std::remainder(a, 2 * pi_v<float>); }
 inline fixed wrap_pi(fixed a) { return fx::angle::from_radians(a).to_radians(); }
 
+// x / d for many x and one d: plain division in floating point; fx::divisor (found by ADL)
+// takes the reciprocal once and gives the same bits as fixed's operator/.
+template <class T>
+struct FloatDivisor {
+    T d;
+    T operator()(T x) const { return x / d; }
+};
+inline FloatDivisor<double> divisor(double d) { return {d}; }
+inline FloatDivisor<float> divisor(float d) { return {d}; }
+inline double quotient(double a, double b) { return a / b; }
+inline float quotient(float a, float b) { return a / b; }
+inline double quarter(double x) { return x / 4; }
+inline float quarter(float x) { return x / 4; }
+
+// The fractions k/n and (n - k)/n for k = 0, 1, ..., n, exactly as T(k) / T(n) and
+// T(n - k) / T(n) round, without a division per k in fixed point: the quotient and remainder
+// of k 2^16 / n are carried from one k to the next.
+template <class T>
+class Fractions {
+public:
+    explicit Fractions(int n) : n_(n) {}
+    T t(int k) const { return T(k) / T(n_); }
+    T u(int k) const { return T(n_ - k) / T(n_); }
+    void next() {}
+
+private:
+    int n_;
+};
+template <>
+class Fractions<fixed> {
+public:
+    explicit Fractions(int n) : n_(static_cast<uint32_t>(n)), dq_(65536u / n_), dr_(65536u % n_) {}
+    // For k = 0, 1, ... in turn, advanced by next(). k 2^16 = q n + r.
+    fixed t(int) const { return fixed::from_raw(static_cast<int32_t>(q_ + (2 * r_ >= n_))); }
+    fixed u(int) const {
+        // (n - k) 2^16 = (2^16 - q) n - r: floor 2^16 - q - (r > 0), remainder n - r (or 0).
+        const uint32_t fl = 65536u - q_ - (r_ > 0), rem = r_ > 0 ? n_ - r_ : 0;
+        return fixed::from_raw(static_cast<int32_t>(fl + (2 * rem >= n_)));
+    }
+    void next() {
+        q_ += dq_, r_ += dr_;
+        if (r_ >= n_) r_ -= n_, ++q_;
+    }
+
+private:
+    uint32_t n_, dq_, dr_, q_ = 0, r_ = 0;
+};
+
 // Converts a double constant to the scalar (compile-time for fixed).
 template <class T>
 constexpr T num(double v) {

@@ -6,16 +6,29 @@
 // polyline. With the fixed-point engine, screen points are computed in Q16.16 and handed to
 // the rasteriser as sub-pixel integers: no floating point between the world and the pixels.
 //
-// Memory: a DrawScratch sized once for the world (prepare) holds every buffer; drawing a
-// frame allocates nothing.
+// A frame is three kinds of work: the backdrop (background, shaded outside, written row by row
+// as spans), each body's geometry (vertices, tessellated edges, projection: body_screen_points,
+// into SubPoints with kBreak where the projection cannot show a point) and each body's raster
+// (draw_screen_points). draw_world does them in turn on the calling thread; the overload taking
+// a render::WorkerPool (parallel.hpp) spreads the backdrop rows and the bodies' geometry over
+// threads started once, and rasterises the bodies in their order on the calling thread as their
+// points become ready, so its pixels are the same, bit for bit.
+//
+// Memory: a DrawScratch (or ParallelScratch) sized once for the world (prepare) holds every
+// buffer; drawing a frame allocates nothing.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <memory>
 #include <type_traits>
 #include <vector>
 
 #include "geometry/geometry.hpp"
 #include "render/canvas.hpp"
+#include "render/parallel.hpp"
 #include "render/raster.hpp"
 #include "world/world.hpp"
 
@@ -33,6 +46,16 @@ struct DrawOptions {
     bool bodies = true;  // draw the other bodies
 };
 
+// A point the projection cannot show: the polyline breaks there. No screen point is ever this
+// (to_sub saturates at +-2^30, to_sub_q16 gives at most +-2^23).
+inline constexpr SubPoint kBreak{INT32_MIN, INT32_MIN};
+
+// The room a body's screen points need: every tessellated point, plus a break after each.
+template <class B>
+std::size_t body_point_capacity(const B& b) {
+    return 2 * (b.local.size() * static_cast<std::size_t>(b.desc->tessellation > 0 ? b.desc->tessellation : 1) + 2);
+}
+
 template <class T>
 struct DrawScratch {
     std::vector<SubPoint> points;
@@ -41,7 +64,7 @@ struct DrawScratch {
     void prepare(const W& world) {
         std::size_t most = 1, most_v = 1;
         for (const auto& b : world.bodies) {
-            most = std::max(most, b.local.size() * static_cast<std::size_t>(b.desc->tessellation) + 2);
+            most = std::max(most, body_point_capacity(b));
             most_v = std::max(most_v, b.local.size());
         }
         points.resize(most);
@@ -53,10 +76,11 @@ struct DrawScratch {
 template <class T>
 struct ScreenMap {
     T cx, cy, scale;
-    static ScreenMap of(const Canvas& c, T R) {
-        const int side = c.width() < c.height() ? c.width() : c.height();
-        return {T(c.width()) / T(2), T(c.height()) / T(2), T(side) / T(2) / R};
+    static ScreenMap of(int width, int height, T R) {
+        const int side = width < height ? width : height;
+        return {T(width) / T(2), T(height) / T(2), T(side) / T(2) / R};
     }
+    static ScreenMap of(const Canvas& c, T R) { return of(c.width(), c.height(), R); }
 };
 
 template <class T>
@@ -67,50 +91,124 @@ SubPoint to_pixels(const geo::ScreenPoint<T>& p) {
         return to_sub(static_cast<double>(p.x), static_cast<double>(p.y));
 }
 
+namespace detail {
+// n pixels of the word w from p on: a few stored one by one, then doubled by memcpy.
+inline void fill_span(uint8_t* p, int n, uint32_t w, int bpp) {
+    if (n <= 0) return;
+    const int first = n < 16 ? n : 16;
+    for (int i = 0; i < first; ++i) std::memcpy(p + i * bpp, &w, static_cast<std::size_t>(bpp));  // little-endian, as set_word
+    const std::size_t total = static_cast<std::size_t>(n) * static_cast<std::size_t>(bpp);
+    std::size_t done = static_cast<std::size_t>(first) * static_cast<std::size_t>(bpp);
+    while (done < total) {
+        const std::size_t c = std::min(done, total - done);
+        std::memcpy(p + done, p, c);
+        done += c;
+    }
+}
+}  // namespace detail
+
+// Rows [y0, y1) of the backdrop: the background, the shaded outside of the limit circle. The
+// same pixels as c.clear(background) then shade_outside_circle(...) (the same column range per
+// row, computed the same way), written once each as spans.
+template <class T>
+void draw_backdrop_rows(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOptions& o, int y0, int y1) {
+    const int w = c.width(), bpp = c.format().bytes_per_pixel();
+    const uint32_t bg = c.format().pack(o.background), out = c.format().pack(o.outside);
+    const double r = static_cast<double>(m.scale) * static_cast<double>(R);
+    const double cx = static_cast<double>(m.cx), cy = static_cast<double>(m.cy);
+    y0 = std::max(y0, 0), y1 = std::min(y1, c.height());
+    for (int y = y0; y < y1; ++y) {
+        uint8_t* row = c.row(y);
+        if (!o.shade_outside) {
+            detail::fill_span(row, w, bg, bpp);
+            continue;
+        }
+        const double dy = y + 0.5 - cy;
+        int in0 = 0, in1 = -1;  // columns whose centre is inside: [in0, in1]
+        if (std::fabs(dy) < r) {
+            const double half = std::sqrt(r * r - dy * dy);
+            in0 = static_cast<int>(std::fmax(-1.0, std::floor(cx - half - 0.5) + 1));
+            in1 = static_cast<int>(std::fmin(w, std::ceil(cx + half - 0.5) - 1));
+        }
+        const int a = std::clamp(in0, 0, w), b = std::clamp(in1 + 1, 0, w);
+        if (a >= b) {
+            detail::fill_span(row, w, out, bpp);
+            continue;
+        }
+        detail::fill_span(row, a, out, bpp);
+        detail::fill_span(row + static_cast<std::ptrdiff_t>(a) * bpp, b - a, bg, bpp);
+        detail::fill_span(row + static_cast<std::ptrdiff_t>(b) * bpp, w - b, out, bpp);
+    }
+}
+
 // The background, the shaded outside and the rim of the limit circle.
 template <class T>
 void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOptions& o) {
-    c.clear(o.background);
-    if (!o.shade_outside) return;
-    const double r = static_cast<double>(m.scale) * static_cast<double>(R);
-    shade_outside_circle(c, static_cast<double>(m.cx), static_cast<double>(m.cy), r, o.outside);
+    draw_backdrop_rows(c, m, R, o, 0, c.height());
 }
 
-// One body's outline.
+// One body's geometry: its vertices (into verts, room for b.local.size()), its edges
+// tessellated at the body's level, projected and mapped to the screen, into out (room for
+// body_point_capacity(b)) as one polyline with kBreak where a point cannot be shown. Returns
+// the number of entries written. Reads the world, writes only verts and out: bodies can be
+// done on different threads at once.
 template <class W>
-void draw_body(const Canvas& c, const W& world, const world::Body<typename W::scalar>& b, const ScreenMap<typename W::scalar>& m,
-               const DrawOptions& o, DrawScratch<typename W::scalar>& s) {
+std::size_t body_screen_points(const W& world, const world::Body<typename W::scalar>& b,
+                               const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
+                               geo::Polar<typename W::scalar>* verts, SubPoint* out) {
     using T = typename W::scalar;
     const std::size_t n = b.local.size();
-    if (n == 0) return;
-    geo::Polar<T>* verts = s.vertices.data();
+    if (n == 0) return 0;
     world.vertices(b, verts);
     const int level = b.desc->tessellation;
     const std::size_t edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
     std::size_t count = 0;
-    const Rgb color{b.desc->color.r, b.desc->color.g, b.desc->color.b};
-    const LineStyle line{o.antialias, o.line_width};
-    auto flush = [&]() {
-        if (count >= 2) draw_polyline(c, s.points.data(), static_cast<int>(count), false, color, line);
-        if (count == 1) draw_line(c, s.points[0], s.points[0], color, line);
-        count = 0;
-    };
+    bool open = false;  // a run of visible points is under way
     auto add = [&](geo::Polar<T> p) {
         const geo::Projected<T> pr = geo::project(world.K, p.r, o.projection);
-        if (!pr.visible) return flush();
-        s.points[count++] = to_pixels(geo::to_screen(pr.rho, p.theta, m.cx, m.cy, m.scale));
+        if (!pr.visible) {
+            if (open) out[count++] = kBreak, open = false;
+            return;
+        }
+        out[count++] = to_pixels(geo::to_screen(pr.rho, p.theta, m.cx, m.cy, m.scale));
+        open = true;
     };
     if (edges == 0) {
         add(verts[0]);
-        flush();
-        return;
+        return count;
     }
     for (std::size_t e = 0; e < edges; ++e)
         W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
             if (k == 0 && e > 0) return;  // shared with the previous edge
             add(p);
         });
-    flush();
+    return count;
+}
+
+// One body's raster: each run between breaks as an open polyline (a single point as a dot).
+inline void draw_screen_points(const Canvas& c, const SubPoint* pts, std::size_t count, Rgb color, LineStyle line) {
+    std::size_t i = 0;
+    while (i < count) {
+        std::size_t j = i;
+        while (j < count && !(pts[j].x == kBreak.x && pts[j].y == kBreak.y)) ++j;
+        const std::size_t run = j - i;
+        if (run >= 2) draw_polyline(c, pts + i, static_cast<int>(run), false, color, line);
+        if (run == 1) draw_line(c, pts[i], pts[i], color, line);
+        i = j + 1;
+    }
+}
+
+template <class B>
+Rgb body_color(const B& b) {
+    return {b.desc->color.r, b.desc->color.g, b.desc->color.b};
+}
+
+// One body's outline.
+template <class W>
+void draw_body(const Canvas& c, const W& world, const world::Body<typename W::scalar>& b, const ScreenMap<typename W::scalar>& m,
+               const DrawOptions& o, DrawScratch<typename W::scalar>& s) {
+    const std::size_t count = body_screen_points(world, b, m, o, s.vertices.data(), s.points.data());
+    draw_screen_points(c, s.points.data(), count, body_color(b), LineStyle{o.antialias, o.line_width});
 }
 
 template <class W>
@@ -123,6 +221,102 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScrat
         if (b.desc->grid ? !o.grids : !o.bodies) continue;
         draw_body(c, world, b, m, o, s);
     }
+}
+
+// ---- the threaded path --------------------------------------------------------------------
+
+// Buffers for draw_world over a WorkerPool: every body's points at once (each body has its own
+// slice), each thread's vertices, and a per-body "ready in frame g" flag. Sized by prepare.
+template <class T>
+struct ParallelScratch {
+    std::vector<SubPoint> points;
+    std::vector<std::size_t> offset, count;
+    std::vector<geo::Polar<T>> vertices;  // threads x most_v
+    std::size_t most_v = 1;
+    std::unique_ptr<std::atomic<uint32_t>[]> ready;
+    std::size_t bodies = 0;
+    uint32_t generation = 0;
+
+    template <class W>
+    void prepare(const W& world, const WorkerPool& pool) {
+        bodies = world.bodies.size();
+        offset.assign(bodies + 1, 0);
+        count.assign(bodies, 0);
+        most_v = 1;
+        for (std::size_t i = 0; i < bodies; ++i) {
+            offset[i + 1] = offset[i] + body_point_capacity(world.bodies[i]);
+            most_v = std::max(most_v, world.bodies[i].local.size());
+        }
+        points.resize(std::max<std::size_t>(offset[bodies], 1));
+        vertices.resize(most_v * static_cast<std::size_t>(pool.size()));
+        ready.reset(new std::atomic<uint32_t>[bodies > 0 ? bodies : 1]());
+        generation = 0;
+    }
+};
+
+// The same frame as draw_world(c, world, o, DrawScratch), pixel for pixel, on pool.size()
+// threads: backdrop bands of rows and bodies' geometry are claimed by whichever thread is free;
+// the calling thread rasterises body after body in the world's order, each as soon as the
+// backdrop is done and its points are ready, and takes a share of the other work while it
+// waits. The scratch must have been prepared for this world and this pool.
+template <class W>
+void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
+                WorkerPool& pool, bool backdrop = true) {
+    using T = typename W::scalar;
+    const ScreenMap<T> m = ScreenMap<T>::of(c, world.R);
+    constexpr int kBandRows = 32;
+    const int bands = backdrop ? (c.height() + kBandRows - 1) / kBandRows : 0;
+    const int nb = static_cast<int>(std::min(s.bodies, world.bodies.size()));
+    const uint32_t gen = ++s.generation;
+    std::atomic<int> next_band{0}, bands_done{0}, next_body{0};
+    const LineStyle line{o.antialias, o.line_width};
+
+    // Claims and does one unit of backdrop or geometry; false when none is left.
+    auto work_one = [&](int tid) -> bool {
+        if (next_band.load(std::memory_order_relaxed) < bands) {
+            const int k = next_band.fetch_add(1, std::memory_order_relaxed);
+            if (k < bands) {
+                draw_backdrop_rows(c, m, world.R, o, k * kBandRows, (k + 1) * kBandRows);
+                bands_done.fetch_add(1, std::memory_order_release);
+                return true;
+            }
+        }
+        if (next_body.load(std::memory_order_relaxed) < nb) {
+            const int i = next_body.fetch_add(1, std::memory_order_relaxed);
+            if (i < nb) {
+                const auto& b = world.bodies[static_cast<std::size_t>(i)];
+                const std::size_t idx = static_cast<std::size_t>(i);
+                s.count[idx] = (b.desc->grid ? !o.grids : !o.bodies)
+                                   ? 0
+                                   : body_screen_points(world, b, m, o, s.vertices.data() + s.most_v * static_cast<std::size_t>(tid),
+                                                        s.points.data() + s.offset[idx]);
+                s.ready[idx].store(gen, std::memory_order_release);
+                return true;
+            }
+        }
+        return false;
+    };
+    auto job = [&](int tid) {
+        if (tid != 0) {
+            while (work_one(tid)) {
+            }
+            return;
+        }
+        int r = 0;  // the next body to rasterise
+        while (r < nb) {
+            if (bands_done.load(std::memory_order_acquire) == bands &&
+                s.ready[static_cast<std::size_t>(r)].load(std::memory_order_acquire) == gen) {
+                const std::size_t idx = static_cast<std::size_t>(r);
+                draw_screen_points(c, s.points.data() + s.offset[idx], s.count[idx], body_color(world.bodies[idx]), line);
+                ++r;
+                continue;
+            }
+            if (!work_one(0)) WorkerPool::pause();
+        }
+        while (bands_done.load(std::memory_order_acquire) < bands)
+            if (!work_one(0)) WorkerPool::pause();
+    };
+    pool.run(job);
 }
 
 }  // namespace noneuclid::render

@@ -1,0 +1,159 @@
+// Geometry cost of the same scenes through the fixed, float and double engines, side by side
+// in one run (Google Benchmark), per vertex and per tessellated point:
+//     build/p8-release/bench_geometry
+//
+//   vertices/<engine>/<scene>  every body's vertices from its centre and facing (walk): ns per
+//                              vertex (counter ns_per_item)
+//   points/<engine>/<scene>    every edge tessellated at its body's level (edge_points): ns per
+//                              point produced, polar (r, theta)
+//   screen/<engine>/<scene>    the draw's whole geometry: vertices, edge points, projection and
+//                              screen coordinates (SubPoints for the rasteriser): ns per point
+// The scenes are the kiosk (grids and five bodies, K = 0 at start, moved to K = -0.6 here so that
+// every curvature function does real work) and stress (200 bodies of 8 vertices at level 8,
+// K = -1), each stepped 30 frames first. A summary table of double/fixed and float/fixed ratios
+// follows the benchmark output.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+
+template <class T>
+world::World<T> make_world(const char* scene_name) {
+    world::Scene scene;
+    world::builtin_scene(scene_name, {}, scene);
+    if (std::string(scene_name) == "kiosk") scene.curvature = -0.6;
+    world::World<T> w(scene);
+    for (int i = 0; i < 30; ++i) w.step(T(1.0 / 60));
+    return w;
+}
+
+std::map<std::string, double> g_ns;  // name -> ns per item, for the summary
+
+template <class T>
+void record(benchmark::State& st, const std::string& name, double items_per_iter) {
+    st.counters["ns_per_item"] = benchmark::Counter(items_per_iter, benchmark::Counter::kIsIterationInvariantRate |
+                                                                        benchmark::Counter::kInvert);
+    st.counters["items"] = items_per_iter;
+    (void)name;
+}
+
+template <class T>
+void vertices(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    std::vector<geo::Polar<T>> buf(4096);
+    double n = 0;
+    for (const auto& b : w.bodies) n += static_cast<double>(b.local.size());
+    for (auto _ : st) {
+        for (const auto& b : w.bodies) w.vertices(b, buf.data());
+        benchmark::DoNotOptimize(buf.data());
+        benchmark::ClobberMemory();
+    }
+    record<T>(st, "vertices", n);
+}
+
+template <class T>
+void points(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    // The vertices, once: this measures the tessellation alone.
+    std::vector<std::vector<geo::Polar<T>>> verts;
+    double n = 0;
+    for (const auto& b : w.bodies) {
+        verts.emplace_back(b.local.size());
+        w.vertices(b, verts.back().data());
+        const std::size_t edges = b.local.size() < 2 ? 0 : (b.desc->closed ? b.local.size() : b.local.size() - 1);
+        n += static_cast<double>(edges) * (b.desc->tessellation + 1);
+    }
+    for (auto _ : st) {
+        T acc{};
+        for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+            const auto& b = w.bodies[i];
+            const auto& v = verts[i];
+            const std::size_t m = v.size();
+            const std::size_t edges = m < 2 ? 0 : (b.desc->closed ? m : m - 1);
+            for (std::size_t e = 0; e < edges; ++e)
+                geo::edge_points(w.K, v[e], v[(e + 1) % m], b.desc->tessellation,
+                                 [&](int, geo::Polar<T> p) { acc = acc + p.r + p.theta; });
+        }
+        benchmark::DoNotOptimize(acc);
+    }
+    record<T>(st, "points", n);
+}
+
+template <class T>
+void screen(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    render::DrawScratch<T> s;
+    s.prepare(w);
+    const render::DrawOptions o;
+    const render::ScreenMap<T> m = render::ScreenMap<T>::of(800, 480, w.R);
+    double n = 0;
+    for (auto _ : st) {
+        std::size_t total = 0;
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            total += render::body_screen_points(w, w.bodies[i], m, o, s.vertices.data(), s.points.data());
+        benchmark::DoNotOptimize(s.points.data());
+        benchmark::ClobberMemory();
+        n = static_cast<double>(total);
+    }
+    record<T>(st, "screen", n);
+}
+
+template <class T>
+const char* engine_name() {
+    if constexpr (std::is_same_v<T, fx::fixed>) return "fixed";
+    else if constexpr (std::is_same_v<T, float>) return "float";
+    else return "double";
+}
+
+class Summary : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) {
+            auto it = r.counters.find("ns_per_item");
+            if (it != r.counters.end()) g_ns[r.benchmark_name()] = it->second.value * 1e9;
+        }
+    }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    const char* scenes[] = {"kiosk", "stress"};
+    for (const char* sc : scenes) {
+        auto reg = [&](auto tag) {
+            using T = decltype(tag);
+            const std::string e = engine_name<T>();
+            benchmark::RegisterBenchmark(("vertices/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { vertices<T>(s, sc); });
+            benchmark::RegisterBenchmark(("points/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { points<T>(s, sc); });
+            benchmark::RegisterBenchmark(("screen/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { screen<T>(s, sc); });
+        };
+        reg(fx::fixed{});
+        reg(float{});
+        reg(double{});
+    }
+    Summary rep;
+    benchmark::RunSpecifiedBenchmarks(&rep);
+    std::printf("\nns per item (vertex or point); ratio > 1: fixed is faster\n\n");
+    std::printf("| stage | scene | fixed ns | float ns | double ns | double/fixed | float/fixed |\n|---|---|---:|---:|---:|---:|---:|\n");
+    for (const char* stage : {"vertices", "points", "screen"})
+        for (const char* sc : scenes) {
+            auto get = [&](const char* e) {
+                auto it = g_ns.find(std::string(stage) + "/" + e + "/" + sc);
+                return it == g_ns.end() ? 0.0 : it->second;
+            };
+            const double f = get("fixed"), fl = get("float"), d = get("double");
+            if (f <= 0) continue;
+            std::printf("| %s | %s | %.1f | %.1f | %.1f | %.2f | %.2f |\n", stage, sc, f, fl, d, d / f, fl / f);
+        }
+    return 0;
+}

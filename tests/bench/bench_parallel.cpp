@@ -1,0 +1,97 @@
+// The threaded frame against one thread, side by side in one run (Google Benchmark):
+//     build/p8-release/bench_parallel
+// draw_world on one thread (DrawScratch) and over a WorkerPool of 1, 2 and 4 threads (started
+// once, before timing), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk, at
+// 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double engines. The world steps once per
+// iteration (serial, included). The pixels are the same in every case (tests/perf/test_parallel).
+// Wall-clock time (UseRealTime): the threads' CPU time is not the caller's.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+
+std::map<std::string, double> g_us;
+
+template <class T>
+void frame(benchmark::State& st, const char* scene_name, int w, int h, render::PixelFormat f, int threads) {
+    world::Scene scene;
+    world::builtin_scene(scene_name, {}, scene);
+    world::World<T> wd(scene);
+    render::DrawScratch<T> serial;
+    serial.prepare(wd);
+    render::WorkerPool pool(threads > 0 ? threads : 1);
+    render::ParallelScratch<T> par;
+    par.prepare(wd, pool);
+    std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
+    const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
+    const render::DrawOptions o;
+    const T dt(1.0 / 60);
+    for (auto _ : st) {
+        wd.step(dt);
+        if (threads == 0)
+            render::draw_world(c, wd, o, serial);
+        else
+            render::draw_world(c, wd, o, par, pool);
+        benchmark::DoNotOptimize(px.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+class Summary : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) g_us[r.benchmark_name()] = r.GetAdjustedRealTime();
+    }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    benchmark::Initialize(&argc, argv);
+    struct Config {
+        const char* name;
+        int w, h;
+        render::PixelFormat f;
+    };
+    const Config configs[] = {{"800x480_rgb565", 800, 480, render::PixelFormat::rgb565()},
+                              {"1920x1080_xrgb8888", 1920, 1080, render::PixelFormat::xrgb8888()}};
+    const int thread_counts[] = {0, 1, 2, 4};  // 0: the single-thread overload
+    for (const char* sc : {"stress", "kiosk"})
+        for (const Config& cf : configs)
+            for (const char* e : {"fixed", "double"})
+                for (int t : thread_counts) {
+                    const std::string name = std::string(sc) + "/" + cf.name + "/" + e + "/" + (t == 0 ? "serial" : "threads" + std::to_string(t));
+                    const int w = cf.w, h = cf.h;
+                    const render::PixelFormat f = cf.f;
+                    auto* b = std::string(e) == "fixed"
+                                  ? benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& s) { frame<fx::fixed>(s, sc, w, h, f, t); })
+                                  : benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& s) { frame<double>(s, sc, w, h, f, t); });
+                    b->Unit(benchmark::kMicrosecond)->UseRealTime();
+                }
+    Summary rep;
+    benchmark::RunSpecifiedBenchmarks(&rep);
+    std::printf("\nframe (step + draw_world), us wall clock; speedup = serial / threaded\n\n");
+    std::printf("| scene | display | engine | serial | pool 1 | pool 2 | pool 4 | speedup 2 | speedup 4 |\n|---|---|---|---:|---:|---:|---:|---:|---:|\n");
+    for (const char* sc : {"stress", "kiosk"})
+        for (const Config& cf : configs)
+            for (const char* e : {"fixed", "double"}) {
+                auto g = [&](const char* t) {
+                    auto it = g_us.find(std::string(sc) + "/" + cf.name + "/" + e + "/" + t);
+                    return it == g_us.end() ? 0.0 : it->second;
+                };
+                const double s0 = g("serial");
+                if (s0 <= 0) continue;
+                std::printf("| %s | %s | %s | %.0f | %.0f | %.0f | %.0f | %.2f | %.2f |\n", sc, cf.name, e, s0, g("threads1"), g("threads2"),
+                            g("threads4"), g("threads2") > 0 ? s0 / g("threads2") : 0.0, g("threads4") > 0 ? s0 / g("threads4") : 0.0);
+            }
+    return 0;
+}

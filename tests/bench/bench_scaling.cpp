@@ -1,0 +1,181 @@
+// Frame cost over bodies s, vertices v and tessellation i (the paper's O(s v i)), side by side in
+// one run (Google Benchmark), fixed and double engines:
+//     build/p8-release/bench_scaling [--svg=scaling.svg]
+// The stress scene (K = -1, random bodies) with s bodies of v vertices at level i, 800x480
+// RGB565, drawn without the backdrop (a constant per frame, measured in bench_breakdown):
+//   geometry  every body's screen points (vertices, edges, projection)
+//   draw      geometry + raster (draw_world, backdrop off)
+// Three sweeps through (s, v, i) = (100, 8, 8): s in 25..400, v in 4..32, i in 1..32. A
+// least-squares fit t = c0 + c_pt (s v i) + c_vx (s v) per engine and stage follows, with the
+// table of every point against the fit, and an SVG plot of us against s v i if --svg is given.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+
+struct Point {
+    int s, v, i;
+};
+std::map<std::string, double> g_us;
+
+template <class T>
+void run(benchmark::State& st, Point p, bool raster) {
+    world::Scene scene;
+    world::builtin_scene("stress", {p.s, p.v, p.i}, scene);
+    world::World<T> wd(scene);
+    render::DrawScratch<T> scratch;
+    scratch.prepare(wd);
+    for (int k = 0; k < 10; ++k) wd.step(T(1.0 / 60));
+    std::vector<uint8_t> px(800 * 480 * 2);
+    const render::Canvas c(px.data(), 800, 480, 1600, render::PixelFormat::rgb565());
+    const render::DrawOptions o;
+    const auto m = render::ScreenMap<T>::of(c, wd.R);
+    for (auto _ : st) {
+        if (raster)
+            render::draw_world(c, wd, o, scratch, false);
+        else
+            for (const auto& b : wd.bodies) benchmark::DoNotOptimize(render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.points.data()));
+        benchmark::ClobberMemory();
+    }
+    st.counters["points"] = static_cast<double>(p.s) * p.v * p.i;
+}
+
+std::string key(const char* e, const char* stage, Point p) {
+    char b[96];
+    std::snprintf(b, sizeof b, "%s/%s/s%d_v%d_i%d", e, stage, p.s, p.v, p.i);
+    return b;
+}
+
+class Summary : public benchmark::ConsoleReporter {
+public:
+    void ReportRuns(const std::vector<Run>& runs) override {
+        ConsoleReporter::ReportRuns(runs);
+        for (const Run& r : runs) g_us[r.benchmark_name()] = r.GetAdjustedCPUTime();
+    }
+};
+
+// Least squares for t = c0 + c1 x1 + c2 x2 (3x3 normal equations, Cramer's rule).
+void fit(const std::vector<double>& x1, const std::vector<double>& x2, const std::vector<double>& t, double c[3]) {
+    double A[3][3] = {}, b[3] = {};
+    for (std::size_t k = 0; k < t.size(); ++k) {
+        const double r[3] = {1, x1[k], x2[k]};
+        for (int i = 0; i < 3; ++i) {
+            b[i] += r[i] * t[k];
+            for (int j = 0; j < 3; ++j) A[i][j] += r[i] * r[j];
+        }
+    }
+    auto det = [](double M[3][3]) {
+        return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+               M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
+    };
+    const double d = det(A);
+    for (int col = 0; col < 3; ++col) {
+        double M[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) M[i][j] = j == col ? b[i] : A[i][j];
+        c[col] = det(M) / d;
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string svg;
+    for (int k = 1; k < argc; ++k)
+        if (std::strncmp(argv[k], "--svg=", 6) == 0) svg = argv[k] + 6;
+    benchmark::Initialize(&argc, argv);
+    std::vector<Point> pts;
+    for (int s : {25, 50, 100, 200, 400}) pts.push_back({s, 8, 8});
+    for (int v : {4, 16, 32}) pts.push_back({100, v, 8});
+    for (int i : {1, 2, 4, 16, 32}) pts.push_back({100, 8, i});
+    for (const char* e : {"fixed", "double"})
+        for (const char* stage : {"geometry", "draw"})
+            for (Point p : pts) {
+                const bool raster = std::strcmp(stage, "draw") == 0;
+                auto* b = std::strcmp(e, "fixed") == 0
+                              ? benchmark::RegisterBenchmark(key(e, stage, p).c_str(), [=](benchmark::State& s) { run<fx::fixed>(s, p, raster); })
+                              : benchmark::RegisterBenchmark(key(e, stage, p).c_str(), [=](benchmark::State& s) { run<double>(s, p, raster); });
+                b->Unit(benchmark::kMicrosecond);
+            }
+    Summary rep;
+    benchmark::RunSpecifiedBenchmarks(&rep);
+
+    std::printf("\nfit: us = c0 + c_pt * (s v i) + c_vx * (s v)   (ns per tessellated point, per vertex)\n\n");
+    std::printf("| engine | stage | c0 us | ns per point | ns per vertex | max |residual| |\n|---|---|---:|---:|---:|---:|\n");
+    struct Series {
+        std::string name;
+        std::vector<double> x, t, f;
+    };
+    std::vector<Series> series;
+    for (const char* e : {"fixed", "double"})
+        for (const char* stage : {"geometry", "draw"}) {
+            std::vector<double> x1, x2, t;
+            for (Point p : pts) {
+                auto it = g_us.find(key(e, stage, p));
+                if (it == g_us.end()) continue;
+                x1.push_back(static_cast<double>(p.s) * p.v * p.i), x2.push_back(static_cast<double>(p.s) * p.v), t.push_back(it->second);
+            }
+            if (t.size() < 4) continue;
+            double c[3];
+            fit(x1, x2, t, c);
+            double worst = 0;
+            Series sr{std::string(e) + " " + stage, x1, t, {}};
+            for (std::size_t k = 0; k < t.size(); ++k) {
+                const double f = c[0] + c[1] * x1[k] + c[2] * x2[k];
+                sr.f.push_back(f);
+                worst = std::fmax(worst, std::fabs(t[k] - f) / t[k]);
+            }
+            series.push_back(sr);
+            std::printf("| %s | %s | %.1f | %.1f | %.1f | %.0f%% |\n", e, stage, c[0], c[1] * 1000, c[2] * 1000, worst * 100);
+        }
+    std::printf("\n| s | v | i | s v i |");
+    for (const Series& sr : series) std::printf(" %s us (fit) |", sr.name.c_str());
+    std::printf("\n|---:|---:|---:|---:|");
+    for (std::size_t k = 0; k < series.size(); ++k) std::printf("---:|");
+    std::printf("\n");
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+        std::printf("| %d | %d | %d | %d |", pts[k].s, pts[k].v, pts[k].i, pts[k].s * pts[k].v * pts[k].i);
+        for (const Series& sr : series)
+            if (k < sr.t.size()) std::printf(" %.0f (%.0f) |", sr.t[k], sr.f[k]);
+        std::printf("\n");
+    }
+    if (!svg.empty() && !series.empty()) {
+        FILE* out = std::fopen(svg.c_str(), "w");
+        if (!out) {
+            std::fprintf(stderr, "bench_scaling: cannot write %s\n", svg.c_str());
+            return 1;
+        }
+        double xmax = 0, tmax = 0;
+        for (const Series& sr : series)
+            for (std::size_t k = 0; k < sr.t.size(); ++k) xmax = std::fmax(xmax, sr.x[k]), tmax = std::fmax(tmax, sr.t[k]);
+        const double W = 640, H = 400, L = 60, B = 40;
+        auto X = [&](double x) { return L + (W - L - 20) * x / xmax; };
+        auto Y = [&](double t) { return H - B - (H - B - 20) * t / tmax; };
+        std::fprintf(out, "<svg xmlns='http://www.w3.org/2000/svg' width='%g' height='%g' font-family='sans-serif' font-size='11'>\n", W, H);
+        std::fprintf(out, "<rect width='100%%' height='100%%' fill='white'/>\n<line x1='%g' y1='%g' x2='%g' y2='%g' stroke='black'/>\n", L, H - B, W - 20, H - B);
+        std::fprintf(out, "<line x1='%g' y1='%g' x2='%g' y2='20' stroke='black'/>\n", L, H - B, L);
+        std::fprintf(out, "<text x='%g' y='%g' text-anchor='middle'>tessellated points s v i (max %.0f)</text>\n", (L + W) / 2, H - 10, xmax);
+        std::fprintf(out, "<text x='12' y='%g' transform='rotate(-90 12 %g)' text-anchor='middle'>us per frame (max %.0f)</text>\n", H / 2, H / 2, tmax);
+        const char* colors[] = {"#c03030", "#e08030", "#3050c0", "#30a0c0"};
+        for (std::size_t k = 0; k < series.size(); ++k) {
+            const Series& sr = series[k];
+            for (std::size_t j = 0; j < sr.t.size(); ++j)
+                std::fprintf(out, "<circle cx='%.1f' cy='%.1f' r='3' fill='%s'/>\n", X(sr.x[j]), Y(sr.t[j]), colors[k % 4]);
+            std::fprintf(out, "<text x='%g' y='%g' fill='%s'>%s</text>\n", L + 10, 30 + 14.0 * static_cast<double>(k), colors[k % 4], sr.name.c_str());
+        }
+        std::fprintf(out, "</svg>\n");
+        std::fclose(out);
+        std::printf("\nplot: %s\n", svg.c_str());
+    }
+    return 0;
+}

@@ -1,0 +1,109 @@
+// Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
+// (../shared/tools/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
+//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS]
+// STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
+// frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
+// lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
+// ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888.
+// The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
+// the same one warm-up frame.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "render/blit.hpp"
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+
+template <class T>
+int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads) {
+    world::Scene scene;
+    if (!world::builtin_scene(scene_name, {}, scene)) {
+        std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
+        return 2;
+    }
+    world::World<T> wd(scene);
+    render::DrawScratch<T> scratch;
+    scratch.prepare(wd);
+    render::WorkerPool pool(threads);
+    render::ParallelScratch<T> par;
+    par.prepare(wd, pool);
+    const std::size_t bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel());
+    std::vector<uint8_t> back(bytes), front(bytes);
+    const render::Canvas c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
+    const render::Canvas fb(front.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
+    const render::DrawOptions o;
+    const T dt(1.0 / 60);
+    auto frame = [&] {
+        wd.step(dt);
+        if (threads > 1)
+            render::draw_world(c, wd, o, par, pool);
+        else
+            render::draw_world(c, wd, o, scratch);
+        render::copy_canvas(c, fb);
+    };
+    frame();  // warm-up, in every run
+    const auto m = render::ScreenMap<T>::of(c, wd.R);
+    std::vector<render::SubPoint> pts;
+    std::vector<std::size_t> counts;
+    for (const auto& b : wd.bodies) {
+        std::vector<render::SubPoint> p(render::body_point_capacity(b));
+        const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), p.data());
+        pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
+        counts.push_back(k);
+    }
+    uint64_t check = 0;
+    for (long i = 0; i < n; ++i) {
+        if (stage == "frame") frame();
+        else if (stage == "step") wd.step(dt);
+        else if (stage == "backdrop") render::draw_backdrop(c, m, wd.R, o);
+        else if (stage == "geometry") {
+            for (const auto& b : wd.bodies) check += render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.points.data());
+        } else if (stage == "raster") {
+            std::size_t at = 0;
+            for (std::size_t k = 0; k < wd.bodies.size(); ++k) {
+                render::draw_screen_points(c, pts.data() + at, counts[k], render::body_color(wd.bodies[k]), {});
+                at += counts[k];
+            }
+        } else if (stage == "copy") render::copy_canvas(c, fb);
+        else if (stage == "memcpy") std::memcpy(front.data(), back.data(), bytes);
+        else {
+            std::fprintf(stderr, "frame_probe: unknown stage '%s'.\n", stage.c_str());
+            return 2;
+        }
+        check += front[i % bytes] + back[(i * 7) % bytes];
+    }
+    std::printf("%s %s %ld checksum %llu\n", stage.c_str(), scene_name, n, static_cast<unsigned long long>(check));
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 7) {
+        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS]\n");
+        return 2;
+    }
+    int w = 0, h = 0;
+    if (std::sscanf(argv[4], "%dx%d", &w, &h) != 2 || w <= 0 || h <= 0) {
+        std::fprintf(stderr, "frame_probe: size must be WxH, not '%s'.\n", argv[4]);
+        return 2;
+    }
+    const std::string fs = argv[5];
+    const render::PixelFormat f = fs == "rgb565" ? render::PixelFormat::rgb565()
+                                  : fs == "rgb888" ? render::PixelFormat::rgb888()
+                                                   : render::PixelFormat::xrgb8888();
+    const long n = std::atol(argv[6]);
+    const int threads = argc > 7 ? std::atoi(argv[7]) : 1;
+    const std::string e = argv[2];
+    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads);
+    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads);
+    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads);
+    std::fprintf(stderr, "frame_probe: engine must be fixed, double or float, not '%s'.\n", argv[2]);
+    return 2;
+}

@@ -1,0 +1,33 @@
+# Performance (issue 8): the geometry and frame benchmarks, the frame-breakdown and scaling
+# benchmarks, the instruction-count frame probe, and the tests that keep the fast paths honest
+# (exact division kernels, the threaded frame identical to one thread). Included from
+# tests/CMakeLists.txt.
+find_package(Threads REQUIRED)
+
+if(NONEUCLID_HAVE_BENCHMARK)
+    foreach(b bench_geometry bench_breakdown bench_scaling bench_parallel)
+        add_executable(${b} bench/${b}.cpp)
+        target_link_libraries(${b} PRIVATE benchmark::benchmark noneuclid_render noneuclid_warnings Threads::Threads)
+    endforeach()
+    target_link_libraries(bench_frame PRIVATE Threads::Threads)
+    if(NOT CMAKE_CROSSCOMPILING)
+        add_test(NAME bench_geometry_smoke
+            COMMAND bench_geometry --benchmark_min_time=0.001 --benchmark_filter=kiosk)
+        set_tests_properties(bench_geometry_smoke PROPERTIES LABELS bench)
+    endif()
+endif()
+
+# Frames for instruction counting under qemu-user (tests/bench/arm-frame-insncount.sh): a
+# plain program, static when cross-compiling.
+add_executable(frame_probe bench/frame_probe.cpp)
+target_link_libraries(frame_probe PRIVATE noneuclid_render noneuclid_warnings Threads::Threads)
+if(CMAKE_CROSSCOMPILING)
+    target_link_options(frame_probe PRIVATE -static)
+endif()
+
+# The fast paths give the same bits as the plain arithmetic; the threaded frame the same pixels
+# as one thread, for every engine.
+add_executable(perf_tests perf/test_fast_paths.cpp perf/test_parallel.cpp)
+target_link_libraries(perf_tests PRIVATE GTest::gtest_main noneuclid_render noneuclid_warnings Threads::Threads)
+gtest_discover_tests(perf_tests DISCOVERY_TIMEOUT 120 PROPERTIES LABELS perf)
+target_link_libraries(no_alloc_tests PRIVATE Threads::Threads)

@@ -1,0 +1,267 @@
+// The performance paths compute what the plain arithmetic computes, bit for bit:
+// - fx::fixed's operator/ on 32-bit targets (a reciprocal instead of __aeabi_ldivmod) and the
+//   per-divisor reciprocal fx::divisor against plain 64-bit integer division, rounded to
+//   nearest with ties away from zero, as fixed.hpp specifies;
+// - geo::Fractions<fixed> against T(k) / T(n);
+// - geo::edge_points in fixed point against the loop it replaced (t = T(k)/T(n), a = u Sf / sfd);
+// - the backdrop written as spans against Canvas::clear + shade_outside_circle;
+// - draw_world's split into body_screen_points + draw_screen_points against the polyline
+//   flushing it replaced, on scenes and projections where points are hidden.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+using fx::fixed;
+
+// x / d in Q16.16 from the definition: (x 2^16) / d rounded half away from zero, saturated.
+int32_t reference_div(int32_t x, int32_t d) {
+    if (d == 0) return x > 0 ? INT32_MAX : (x < 0 ? INT32_MIN : 0);
+    int64_t n = int64_t{x} * 65536, dd = d;
+    if (dd < 0) n = -n, dd = -dd;
+    const int64_t q = n >= 0 ? (n + dd / 2) / dd : -((-n + dd / 2) / dd);
+    return q > INT32_MAX ? INT32_MAX : (q < INT32_MIN ? INT32_MIN : static_cast<int32_t>(q));
+}
+
+std::vector<int32_t> interesting() {
+    std::vector<int32_t> v = {0, 1, -1, 2, -2, 3, 7, 255, 256, 65535, 65536, -65536, 65537, 98304, 1 << 20,
+                              INT32_MAX, INT32_MIN, INT32_MIN + 1, INT32_MAX - 1, 1 << 30, -(1 << 30)};
+    std::mt19937 rng(8);
+    for (int i = 0; i < 300; ++i) {
+        const int bits = static_cast<int>(rng() % 32);
+        const int32_t x = static_cast<int32_t>(rng() >> (31 - bits % 31));
+        v.push_back(x), v.push_back(-x);
+    }
+    return v;
+}
+
+TEST(FastPaths, OperatorDivideMatchesTheDefinition) {
+    const auto vals = interesting();
+    for (int32_t x : vals)
+        for (int32_t d : vals) ASSERT_EQ((fixed::from_raw(x) / fixed::from_raw(d)).raw(), reference_div(x, d)) << x << " / " << d;
+}
+
+TEST(FastPaths, PortableDivisionMatchesTheDefinition) {
+    const auto vals = interesting();
+    for (int32_t x : vals)
+        for (int32_t d : vals) {
+            if (d == 0) continue;
+            const int64_t n = int64_t{x} * 65536;
+            const uint32_t ad = d < 0 ? 0u - static_cast<uint32_t>(d) : static_cast<uint32_t>(d);
+            const int64_t q = fx::detail::div_round_portable(d < 0 ? -n : n, ad);
+            const int32_t s = q > INT32_MAX ? INT32_MAX : (q < INT32_MIN ? INT32_MIN : static_cast<int32_t>(q));
+            ASSERT_EQ(s, reference_div(x, d)) << x << " / " << d;
+        }
+}
+
+template <bool Native>
+void divisor_matches() {
+    const auto vals = interesting();
+    for (int32_t d : vals) {
+        const fx::detail::Divisor<Native> div(d);
+        for (int32_t x : vals) ASSERT_EQ(div.quotient_q16(x), reference_div(x, d)) << x << " / " << d;
+    }
+    // Divisors the geometry meets (Sf of an edge: about 0.3 .. 4), dense numerators.
+    std::mt19937 rng(88);
+    for (int i = 0; i < 2000; ++i) {
+        const int32_t d = static_cast<int32_t>(rng() % (4 << 16)) + 1;
+        const fx::detail::Divisor<Native> div(d);
+        for (int j = 0; j < 200; ++j) {
+            const int32_t x = static_cast<int32_t>(rng() % (8 << 16)) - (4 << 16);
+            ASSERT_EQ(div.quotient_q16(x), reference_div(x, d)) << x << " / " << d;
+        }
+    }
+}
+TEST(FastPaths, DivisorNative) { divisor_matches<true>(); }
+TEST(FastPaths, DivisorReciprocal) { divisor_matches<false>(); }
+TEST(FastPaths, DivisorOfFixed) {
+    for (int32_t d : interesting())
+        for (int32_t x : {0, 1, -1, 12345, -98765, INT32_MAX, INT32_MIN})
+            ASSERT_EQ(fx::divisor(fixed::from_raw(d))(fixed::from_raw(x)).raw(), reference_div(x, d));
+}
+
+TEST(FastPaths, QuotientAndQuarterAreOperatorDivide) {
+    const auto vals = interesting();
+    for (int32_t x : vals) {
+        ASSERT_EQ(fx::quarter(fixed::from_raw(x)).raw(), reference_div(x, 4 << 16)) << x;
+        for (int32_t d : vals) ASSERT_EQ(fx::quotient(fixed::from_raw(x), fixed::from_raw(d)).raw(), reference_div(x, d));
+    }
+}
+
+// atan2's tangent num 2^32 / den (num <= den) and the like: the reciprocal gives the floor.
+TEST(FastPaths, FloorDivisionByReciprocal) {
+    std::mt19937_64 rng(32);
+    for (int i = 0; i < 400000; ++i) {
+        uint32_t den = static_cast<uint32_t>(rng() >> (32 + rng() % 32));
+        if (den == 0) den = 1;
+        const uint32_t num = static_cast<uint32_t>(rng() % (uint64_t{den} + 1));
+        const uint64_t n = uint64_t{num} << 32;
+        ASSERT_EQ(fx::detail::udiv_floor_reciprocal(n, den), n / den) << num << " / " << den;
+    }
+    for (uint32_t den : {1u, 2u, 3u, 0xFFFFFFFFu, 0x80000000u, 0x7FFFFFFFu, 65536u})
+        for (uint32_t num : {0u, 1u, den / 2, den - 1, den}) {
+            const uint64_t n = uint64_t{num} << 32;
+            ASSERT_EQ(fx::detail::udiv_floor_reciprocal(n, den), n / den) << num << " / " << den;
+        }
+}
+
+TEST(FastPaths, FractionsAreTheQuotients) {
+    for (int n = 1; n < 3000; n += (n < 300 ? 1 : 37)) {
+        geo::Fractions<fixed> f(n);
+        for (int k = 1; k < n; ++k) {
+            f.next();
+            ASSERT_EQ(f.t(k).raw(), (fixed(k) / fixed(n)).raw()) << k << "/" << n;
+            ASSERT_EQ(f.u(k).raw(), (fixed(n - k) / fixed(n)).raw()) << n - k << "/" << n;
+        }
+    }
+}
+
+// The edge loop as it was before the fast path (geometry.hpp, generalised slerp).
+template <class T>
+void old_edge_points(T K, geo::Polar<T> p, geo::Polar<T> q, int n, std::vector<geo::Polar<T>>& out) {
+    using namespace geo;
+    const T d = distance(K, p, q);
+    const T sfd = Sf(K * d * d);
+    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) {
+        const T heading = p.r > T(0) ? p.theta : q.theta;
+        out.push_back(p);
+        for (int k = 1; k < n; ++k) out.push_back(walk(K, p, heading, d * T(k) / T(n)).end);
+        out.push_back(q);
+        return;
+    }
+    const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
+    out.push_back(p);
+    for (int k = 1; k < n; ++k) {
+        const T t = T(k) / T(n), u = T(n - k) / T(n);
+        const T a = u * Sf(K * (u * d) * (u * d)) / sfd;
+        const T b = t * Sf(K * (t * d) * (t * d)) / sfd;
+        out.push_back(to_polar(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}));
+    }
+    out.push_back(q);
+}
+
+TEST(FastPaths, EdgePointsBitForBit) {
+    std::mt19937 rng(2019);
+    std::uniform_real_distribution<double> r01(0, 1);
+    std::vector<geo::Polar<fixed>> a, b;
+    for (double K : {-1.0, -0.7, -0.013, 0.0, 1e-4, 0.2, 0.5, 1.0})
+        for (int i = 0; i < 600; ++i) {
+            const double R = K > 0 ? 3.14159 / std::sqrt(K) : 3.14159;
+            const geo::Polar<fixed> p{fixed(R * r01(rng)), fixed(6.28 * r01(rng) - 3.14)};
+            const geo::Polar<fixed> q = i % 3 == 0 ? geo::Polar<fixed>{fixed(static_cast<double>(p.r) + 0.01 * r01(rng)), p.theta}
+                                                   : geo::Polar<fixed>{fixed(R * r01(rng)), fixed(6.28 * r01(rng) - 3.14)};
+            for (int n : {1, 2, 3, 7, 8, 16, 33}) {
+                a.clear(), b.clear();
+                old_edge_points(fixed(K), p, q, n, a);
+                geo::edge_points(fixed(K), p, q, n, [&](int, geo::Polar<fixed> x) { b.push_back(x); });
+                ASSERT_EQ(a.size(), b.size());
+                for (std::size_t j = 0; j < a.size(); ++j) {
+                    ASSERT_EQ(a[j].r.raw(), b[j].r.raw()) << K << " " << i << " " << n << " " << j;
+                    ASSERT_EQ(a[j].theta.raw(), b[j].theta.raw()) << K << " " << i << " " << n << " " << j;
+                }
+            }
+        }
+}
+
+TEST(FastPaths, BackdropSpansAreClearPlusShade) {
+    for (render::PixelFormat f : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(), render::PixelFormat::rgb888()})
+        for (auto [w, h] : {std::pair{800, 480}, std::pair{33, 97}, std::pair{1, 1}, std::pair{480, 480}, std::pair{101, 40}})
+            for (double R : {3.14159265358979, 1.0, 0.3})
+                for (bool shade : {true, false}) {
+                    const std::size_t stride = static_cast<std::size_t>(w * f.bytes_per_pixel() + 8);
+                    std::vector<uint8_t> x(stride * static_cast<std::size_t>(h), 0xAB), y = x;
+                    const render::Canvas cx(x.data(), w, h, static_cast<std::ptrdiff_t>(stride), f);
+                    const render::Canvas cy(y.data(), w, h, static_cast<std::ptrdiff_t>(stride), f);
+                    render::DrawOptions o;
+                    o.shade_outside = shade;
+                    const auto m = render::ScreenMap<double>::of(cx, R);
+                    render::draw_backdrop(cx, m, R, o);
+                    cy.clear(o.background);
+                    if (shade) render::shade_outside_circle(cy, m.cx, m.cy, m.scale * R, o.outside);
+                    ASSERT_EQ(x, y) << w << "x" << h << " R " << R << " shade " << shade;
+                }
+}
+
+// draw_body as it was: flush the polyline where a point is hidden.
+template <class W>
+void old_draw_world(const render::Canvas& c, const W& world, const render::DrawOptions& o) {
+    using T = typename W::scalar;
+    const auto m = render::ScreenMap<T>::of(c, world.R);
+    c.clear(o.background);
+    if (o.shade_outside)
+        render::shade_outside_circle(c, static_cast<double>(m.cx), static_cast<double>(m.cy),
+                                     static_cast<double>(m.scale) * static_cast<double>(world.R), o.outside);
+    std::vector<render::SubPoint> pts;
+    std::vector<geo::Polar<T>> verts;
+    for (const auto& b : world.bodies) {
+        if (b.desc->grid ? !o.grids : !o.bodies) continue;
+        const std::size_t n = b.local.size();
+        if (n == 0) continue;
+        verts.resize(n);
+        world.vertices(b, verts.data());
+        const render::Rgb color{b.desc->color.r, b.desc->color.g, b.desc->color.b};
+        const render::LineStyle line{o.antialias, o.line_width};
+        auto flush = [&] {
+            if (pts.size() >= 2) render::draw_polyline(c, pts.data(), static_cast<int>(pts.size()), false, color, line);
+            if (pts.size() == 1) render::draw_line(c, pts[0], pts[0], color, line);
+            pts.clear();
+        };
+        auto add = [&](geo::Polar<T> p) {
+            const auto pr = geo::project(world.K, p.r, o.projection);
+            if (!pr.visible) return flush();
+            pts.push_back(render::to_pixels(geo::to_screen(pr.rho, p.theta, m.cx, m.cy, m.scale)));
+        };
+        const std::size_t edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
+        if (edges == 0) {
+            add(verts[0]);
+            flush();
+            continue;
+        }
+        for (std::size_t e = 0; e < edges; ++e)
+            W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], b.desc->tessellation, [&](int k, geo::Polar<T> p) {
+                if (k == 0 && e > 0) return;
+                add(p);
+            });
+        flush();
+    }
+}
+
+template <class T>
+void same_as_before(const char* scene_name, double K, geo::Projection proj, bool aa) {
+    world::Scene scene;
+    ASSERT_TRUE(world::builtin_scene(scene_name, {40, 6, 5}, scene));
+    scene.curvature = K;
+    world::World<T> w(scene);
+    render::DrawScratch<T> s;
+    s.prepare(w);
+    const render::PixelFormat f = render::PixelFormat::xrgb8888();
+    std::vector<uint8_t> a(320 * 240 * 4), b(a.size());
+    const render::Canvas ca(a.data(), 320, 240, 320 * 4, f), cb(b.data(), 320, 240, 320 * 4, f);
+    render::DrawOptions o;
+    o.projection = proj;
+    o.antialias = aa;
+    for (int i = 0; i < 20; ++i) {
+        w.step(T(0.1));
+        render::draw_world(ca, w, o, s);
+        old_draw_world(cb, w, o);
+        ASSERT_EQ(a, b) << scene_name << " K " << K << " frame " << i;
+    }
+}
+
+TEST(FastPaths, DrawWorldPixelsAsBefore) {
+    for (geo::Projection p : geo::kProjections)
+        for (bool aa : {false, true}) {
+            same_as_before<fixed>("kiosk", 0.8, p, aa);
+            same_as_before<double>("kiosk", 0.8, p, aa);
+            same_as_before<float>("stress", 1.0, p, aa);
+            same_as_before<fixed>("stress", -1.0, p, aa);
+        }
+}
+
+}  // namespace
