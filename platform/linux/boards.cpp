@@ -7,6 +7,10 @@
 
 namespace noneuclid::platform {
 namespace fs = std::filesystem;
+namespace {
+// boards/generic.toml, read into the binary at build time.
+#include "generic_board.inc"
+}  // namespace
 
 std::vector<std::string> board_dirs() {
     std::vector<std::string> dirs;
@@ -38,6 +42,11 @@ bool load_board(const std::string& spec, world::Board& out, std::string& error) 
             return false;
         }
         looked += (looked.empty() ? "" : ", ") + d;
+    }
+    if (spec == "generic") {  // no boards directory (a binary copied on its own): built in
+        if (world::parse_board(kGenericBoard, "generic (built in)", out, e)) return true;
+        error = e.to_string();
+        return false;
     }
     error = "no board named '" + spec + "' in " + (looked.empty() ? std::string("any boards directory") : looked) +
             ": use rpi-zero2w, rpi3, rpi4, rpi5 or generic, give a board file's path, or set NONEUCLID_BOARDS to the directory";
