@@ -141,13 +141,14 @@ bool find_chip(const GpioConfig& config, ChipProbe probe, std::string& path, Chi
         else if ((c.err == EACCES || c.err == EPERM) && denied.empty())
             denied = c.path;
     }
-    if (!denied.empty()) {
+    const bool any_label = std::any_of(config.chips.begin(), config.chips.end(), [](const std::string& c) { return !is_path(c); });
+    if (any_label && !denied.empty()) {
         // Some chips could not be opened: the wanted one is probably among them.
         error = "no permission to open " + denied + " (looking for the GPIO chip " + tried +
                 "): add the user to the gpio group (`sudo usermod -aG gpio $USER`) and log in again";
         return false;
     }
-    if (config.chips.size() == 1 && !first_path_error.empty()) {
+    if (!any_label && config.chips.size() == 1 && !first_path_error.empty()) {
         error = first_path_error + ": " + kChipHint + " (or its /dev/gpiochipN path)";
         return false;
     }

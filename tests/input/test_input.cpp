@@ -1,0 +1,499 @@
+// Kiosk input (platform/linux): what runs without GPIO or input devices. The configuration
+// checks, the chip search against a fake /dev and fake labels, the sentences for missing chips
+// and devices (checked against what this machine really has), the debounce state machine on a
+// synthetic clock, and print_input_events over a pipe. The backends against a real kernel:
+// tests/system/input.sh (gpio-sim and uinput under qemu).
+#include <dirent.h>
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "linux/gpio_common.hpp"
+#include "linux/input.hpp"
+
+namespace p = noneuclid::platform;
+namespace gd = noneuclid::platform::gpio_detail;
+using noneuclid::world::Control;
+using noneuclid::world::InputEvent;
+
+namespace {
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+bool dir_has_entry_starting(const char* dir, const char* prefix) {
+    DIR* d = opendir(dir);
+    if (!d) return false;
+    bool found = false;
+    while (const dirent* e = readdir(d))
+        if (std::strncmp(e->d_name, prefix, std::strlen(prefix)) == 0) found = true;
+    closedir(d);
+    return found;
+}
+
+p::GpioConfig two_buttons() {
+    p::GpioConfig c;
+    c.chips = {"pinctrl-bcm2711", "pinctrl-rp1"};
+    c.buttons = {{Control::thrust, 17, 11}, {Control::left, 27, 13}};
+    return c;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Configuration sentences
+// ---------------------------------------------------------------------------------------------
+
+TEST(GpioConfig, GoodConfigHasNoError) { EXPECT_EQ(gd::check_config(two_buttons()), ""); }
+
+TEST(GpioConfig, NoButtons) {
+    auto c = two_buttons();
+    c.buttons.clear();
+    EXPECT_TRUE(contains(gd::check_config(c), "no GPIO buttons are configured"));
+}
+
+TEST(GpioConfig, NoChip) {
+    auto c = two_buttons();
+    c.chips.clear();
+    const auto e = gd::check_config(c);
+    EXPECT_TRUE(contains(e, "no GPIO chip is configured")) << e;
+    EXPECT_TRUE(contains(e, "gpiodetect")) << e;
+}
+
+TEST(GpioConfig, LineGivenTwiceNamesBothControls) {
+    auto c = two_buttons();
+    c.buttons[1].line = 17;
+    const auto e = gd::check_config(c);
+    EXPECT_TRUE(contains(e, "GPIO line 17 is given to both thrust and left")) << e;
+}
+
+TEST(GpioConfig, DebounceTooLong) {
+    auto c = two_buttons();
+    c.debounce_ms = 5000;
+    EXPECT_TRUE(contains(gd::check_config(c), "debounce of 5000 ms is too long"));
+}
+
+TEST(GpioConfig, LineDescriptionNamesPinAndControl) {
+    EXPECT_EQ(gd::describe_line({Control::thrust, 17, 11}), "GPIO line 17 (thrust, header pin 11)");
+    EXPECT_EQ(gd::describe_line({Control::reset, 5, 0}), "GPIO line 5 (reset)");
+}
+
+TEST(GpioConfig, RequestErrors) {
+    const p::GpioButton b{Control::thrust, 17, 11};
+    auto busy = gd::request_error(b, "pinctrl-bcm2711 (/dev/gpiochip0)", EBUSY, "gpio_keys");
+    EXPECT_TRUE(contains(busy, "GPIO line 17 (thrust, header pin 11) on pinctrl-bcm2711 (/dev/gpiochip0) is in use by "
+                               "\"gpio_keys\"")) << busy;
+    EXPECT_TRUE(contains(busy, "dtoverlay=gpio-key")) << busy;
+    auto busy_unknown = gd::request_error(b, "chip", EBUSY, "");
+    EXPECT_TRUE(contains(busy_unknown, "another process or a gpio-key overlay")) << busy_unknown;
+    for (int err : {EACCES, EPERM}) {
+        auto perm = gd::request_error(b, "chip", err, "");
+        EXPECT_TRUE(contains(perm, "sudo usermod -aG gpio $USER")) << perm;
+        EXPECT_TRUE(contains(perm, "log in again")) << perm;
+    }
+    auto range = gd::line_range_error({Control::left, 60, 0}, "pinctrl-bcm2711 (/dev/gpiochip0)", 58);
+    EXPECT_TRUE(contains(range, "GPIO line 60 (left) does not exist on pinctrl-bcm2711 (/dev/gpiochip0), which has 58 "
+                                "lines (0 to 57)")) << range;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The chip search, against a fake /dev (files named gpiochipN) and a fake probe
+// ---------------------------------------------------------------------------------------------
+
+class FakeDev : public ::testing::Test {
+protected:
+    void SetUp() override {
+        char tmpl[] = "/tmp/noneuclid-gpio-XXXXXX";
+        ASSERT_NE(mkdtemp(tmpl), nullptr);
+        dir_ = tmpl;
+        // Out of order and with a non-chip entry, to check the numeric sort and the filter.
+        for (const char* n : {"gpiochip10", "gpiochip2", "gpiochip0", "gpiochipX", "null"}) {
+            int fd = ::open((dir_ + "/" + n).c_str(), O_CREAT | O_WRONLY, 0600);
+            ASSERT_GE(fd, 0);
+            close(fd);
+        }
+    }
+    void TearDown() override {
+        for (const char* n : {"gpiochip10", "gpiochip2", "gpiochip0", "gpiochipX", "null"})
+            unlink((dir_ + "/" + n).c_str());
+        rmdir(dir_.c_str());
+    }
+    std::string dir_;
+};
+
+// gpiochip0 "pinctrl-bcm2711" (58 lines), gpiochip2 "raspberrypi-exp-gpio" (8), gpiochip10: EACCES.
+int fake_probe(const std::string& path, gd::ChipInfo& info) {
+    if (path.size() >= 10 && path.compare(path.size() - 10, 10, "gpiochip10") == 0) return EACCES;
+    if (path.size() >= 9 && path.compare(path.size() - 9, 9, "gpiochip0") == 0) {
+        info = {"pinctrl-bcm2711", 58};
+        return 0;
+    }
+    if (path.size() >= 9 && path.compare(path.size() - 9, 9, "gpiochip2") == 0) {
+        info = {"raspberrypi-exp-gpio", 8};
+        return 0;
+    }
+    return ENOTTY;
+}
+int fake_probe_all_open(const std::string& path, gd::ChipInfo& info) {
+    int e = fake_probe(path, info);
+    if (e == EACCES) info = {"gpio-sim.0-node0", 8};
+    return e == EACCES ? 0 : e;
+}
+
+TEST_F(FakeDev, ListsChipsInNumericOrder) {
+    const auto chips = gd::list_chips(dir_);
+    ASSERT_EQ(chips.size(), 3u);
+    EXPECT_EQ(chips[0], dir_ + "/gpiochip0");
+    EXPECT_EQ(chips[1], dir_ + "/gpiochip2");
+    EXPECT_EQ(chips[2], dir_ + "/gpiochip10");
+}
+
+TEST_F(FakeDev, FirstMatchingLabelWins) {
+    p::GpioConfig c = two_buttons();
+    c.chips = {"pinctrl-rp1", "raspberrypi-exp-gpio", "pinctrl-bcm2711"};
+    std::string path, error;
+    gd::ChipInfo info;
+    ASSERT_TRUE(gd::find_chip(c, fake_probe, path, info, error, dir_)) << error;
+    EXPECT_EQ(path, dir_ + "/gpiochip2");
+    EXPECT_EQ(info.label, "raspberrypi-exp-gpio");
+    EXPECT_EQ(info.num_lines, 8u);
+}
+
+TEST_F(FakeDev, PathEntry) {
+    p::GpioConfig c = two_buttons();
+    c.chips = {dir_ + "/gpiochip0"};
+    std::string path, error;
+    gd::ChipInfo info;
+    ASSERT_TRUE(gd::find_chip(c, fake_probe, path, info, error, dir_)) << error;
+    EXPECT_EQ(path, dir_ + "/gpiochip0");
+    EXPECT_EQ(info.label, "pinctrl-bcm2711");
+}
+
+TEST_F(FakeDev, NoMatchListsWhatWasTriedAndWhatExists) {
+    p::GpioConfig c = two_buttons();
+    c.chips = {"pinctrl-rp1", "pinctrl-bcm2835"};
+    std::string path, error;
+    gd::ChipInfo info;
+    ASSERT_FALSE(gd::find_chip(c, fake_probe_all_open, path, info, error, dir_));
+    EXPECT_TRUE(contains(error, "no GPIO chip matches pinctrl-rp1, pinctrl-bcm2835")) << error;
+    EXPECT_TRUE(contains(error, dir_ + "/gpiochip0 \"pinctrl-bcm2711\"")) << error;
+    EXPECT_TRUE(contains(error, dir_ + "/gpiochip10 \"gpio-sim.0-node0\"")) << error;
+    EXPECT_TRUE(contains(error, "gpiodetect")) << error;
+}
+
+TEST_F(FakeDev, UnreadableChipGivesTheGroupSentence) {
+    p::GpioConfig c = two_buttons();
+    c.chips = {"pinctrl-rp1"};
+    std::string path, error;
+    gd::ChipInfo info;
+    ASSERT_FALSE(gd::find_chip(c, fake_probe, path, info, error, dir_));
+    EXPECT_TRUE(contains(error, "no permission to open " + dir_ + "/gpiochip10")) << error;
+    EXPECT_TRUE(contains(error, "sudo usermod -aG gpio $USER")) << error;
+}
+
+TEST_F(FakeDev, MissingPathSaysItDoesNotExist) {
+    p::GpioConfig c = two_buttons();
+    c.chips = {dir_ + "/gpiochip7"};
+    std::string path, error;
+    gd::ChipInfo info;
+    ASSERT_FALSE(gd::find_chip(c, fake_probe, path, info, error, dir_));
+    EXPECT_TRUE(contains(error, dir_ + "/gpiochip7 does not exist")) << error;
+}
+
+// ---------------------------------------------------------------------------------------------
+// open_gpio / open_evdev on this machine: the sentences, checked against what /dev really has
+// ---------------------------------------------------------------------------------------------
+
+#if NONEUCLID_HAVE_GPIOD
+TEST(OpenGpio, VersionNamesTheApi) {
+    const std::string v = p::gpiod_version();
+    EXPECT_TRUE(contains(v, "(v" + std::to_string(NONEUCLID_GPIOD_MAJOR) + " API)")) << v;
+    EXPECT_EQ(v.substr(0, 1), std::to_string(NONEUCLID_GPIOD_MAJOR)) << v;
+}
+
+TEST(OpenGpio, ConfigErrorComesFirst) {
+    auto c = two_buttons();
+    c.buttons.clear();
+    std::string error;
+    EXPECT_EQ(p::open_gpio(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "no GPIO buttons are configured")) << error;
+}
+
+TEST(OpenGpio, MissingChipPath) {
+    const std::string missing = "/dev/gpiochip97";
+    struct stat st {};
+    ASSERT_NE(stat(missing.c_str(), &st), 0) << missing << " exists here";
+    auto c = two_buttons();
+    c.chips = {missing};
+    std::string error;
+    EXPECT_EQ(p::open_gpio(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "/dev/gpiochip97 does not exist")) << error;
+}
+
+TEST(OpenGpio, NotAChip) {
+    auto c = two_buttons();
+    c.chips = {"/dev/null"};
+    std::string error;
+    EXPECT_EQ(p::open_gpio(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "/dev/null is not a GPIO chip")) << error;
+}
+
+TEST(OpenGpio, NoChipWithTheLabel) {
+    auto c = two_buttons();
+    c.chips = {"noneuclid-no-such-label", "another-label"};
+    std::string error;
+    EXPECT_EQ(p::open_gpio(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "no GPIO chip matches noneuclid-no-such-label, another-label")) << error;
+    if (!dir_has_entry_starting("/dev", "gpiochip")) {
+        EXPECT_TRUE(contains(error, "this system has no /dev/gpiochip* devices")) << error;
+    } else {
+        EXPECT_TRUE(contains(error, "the chips here are /dev/gpiochip")) << error;
+    }
+}
+#endif
+
+p::EvdevConfig two_keys() {
+    p::EvdevConfig c;
+    c.keys = {{Control::thrust, 103}, {Control::left, 105}};
+    return c;
+}
+
+TEST(OpenEvdev, NoKeys) {
+    p::EvdevConfig c;
+    std::string error;
+    EXPECT_EQ(p::open_evdev(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "no evdev keys are configured")) << error;
+}
+
+TEST(OpenEvdev, CodeOutOfRange) {
+    for (unsigned code : {0u, 768u, 100000u}) {
+        auto c = two_keys();
+        c.keys[1].code = code;
+        std::string error;
+        EXPECT_EQ(p::open_evdev(c, error), nullptr);
+        EXPECT_TRUE(contains(error, "key code " + std::to_string(code) + " (left) is not an evdev key")) << error;
+    }
+}
+
+TEST(OpenEvdev, CodeGivenTwice) {
+    auto c = two_keys();
+    c.keys[1].code = 103;
+    std::string error;
+    EXPECT_EQ(p::open_evdev(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "key code 103 is given to both thrust and left")) << error;
+}
+
+TEST(OpenEvdev, MissingDevice) {
+    auto c = two_keys();
+    c.device = "/dev/input/by-id/noneuclid-no-such-keyboard";
+    std::string error;
+    EXPECT_EQ(p::open_evdev(c, error), nullptr);
+    EXPECT_TRUE(contains(error, c.device + " does not exist")) << error;
+}
+
+TEST(OpenEvdev, NotAKeyDevice) {
+    auto c = two_keys();
+    c.device = "/dev/null";
+    std::string error;
+    EXPECT_EQ(p::open_evdev(c, error), nullptr);
+    EXPECT_TRUE(contains(error, "/dev/null () has none of the key codes 103, 105")) << error;
+}
+
+TEST(OpenEvdev, ScanNamesTheCodesLookedFor) {
+    auto c = two_keys();
+    std::string error;
+    auto src = p::open_evdev(c, error);
+    if (src) GTEST_SKIP() << "this machine has a key device: " << src->describe();
+    EXPECT_TRUE(contains(error, "key codes 103, 105")) << error;
+    if (!dir_has_entry_starting("/dev/input", "event")) {
+        EXPECT_TRUE(contains(error, "this system has no /dev/input/event* devices")) << error;
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The debounce state machine on a synthetic clock (ms -> ns)
+// ---------------------------------------------------------------------------------------------
+
+constexpr int64_t ms(int64_t v) { return v * 1000000; }
+
+struct Tracker {
+    explicit Tracker(unsigned debounce_ms) {
+        auto c = two_buttons();
+        c.debounce_ms = debounce_ms;
+        t.init(c, ms(debounce_ms));
+    }
+    std::string drain() {
+        InputEvent ev[8];
+        std::string s;
+        for (int n; (n = t.pop(ev, 8)) > 0;)
+            for (int i = 0; i < n; ++i)
+                s += std::string(ev[i].pressed ? "+" : "-") + noneuclid::world::control_name(ev[i].control) + " ";
+        return s;
+    }
+    gd::ButtonTracker t;
+    int level[2] = {0, 0};  // what expire() reads
+    void expire(int64_t now) {
+        t.expire(now, [this](int i) { return level[i]; });
+    }
+};
+
+TEST(Debounce, InitialLevelGivesAPressForAHeldButton) {
+    Tracker k(10);
+    k.t.set_initial(0, false);
+    k.t.set_initial(1, true);
+    EXPECT_EQ(k.drain(), "+left ");
+    k.t.edge(1, true, ms(5));  // already pressed: nothing new
+    EXPECT_EQ(k.drain(), "");
+}
+
+TEST(Debounce, BouncingPressGivesOnePressAtTheFirstEdge) {
+    Tracker k(10);
+    k.t.set_initial(0, false);
+    k.t.edge(0, true, ms(100));  // reported at once: no added latency
+    EXPECT_EQ(k.drain(), "+thrust ");
+    EXPECT_EQ(k.t.deadline(), ms(110));
+    k.t.edge(0, false, ms(101));
+    k.t.edge(0, true, ms(102));
+    k.t.edge(0, false, ms(103));
+    k.t.edge(0, true, ms(104));
+    k.level[0] = 1;
+    k.expire(ms(109));  // window still open
+    EXPECT_EQ(k.drain(), "");
+    k.expire(ms(110));  // closes; the level is still pressed
+    EXPECT_EQ(k.drain(), "");
+    EXPECT_EQ(k.t.deadline(), -1);
+    k.t.edge(0, false, ms(300));
+    EXPECT_EQ(k.drain(), "-thrust ");
+}
+
+TEST(Debounce, PressShorterThanTheWindowStillGivesItsRelease) {
+    Tracker k(10);
+    k.t.edge(0, true, ms(0));
+    k.t.edge(0, false, ms(3));
+    k.level[0] = 0;
+    k.expire(ms(10));
+    EXPECT_EQ(k.drain(), "+thrust -thrust ");
+    // The release opened a new window.
+    EXPECT_EQ(k.t.deadline(), ms(20));
+}
+
+TEST(Debounce, ButtonsAreIndependent) {
+    Tracker k(10);
+    k.t.edge(0, true, ms(0));
+    k.t.edge(1, true, ms(1));  // another button inside thrust's window
+    EXPECT_EQ(k.drain(), "+thrust +left ");
+    EXPECT_EQ(k.t.deadline(), ms(10));
+}
+
+TEST(Debounce, ZeroDebounceReportsEveryChange) {
+    Tracker k(0);
+    k.t.edge(0, true, ms(0));
+    k.t.edge(0, false, ms(0));
+    k.t.edge(0, false, ms(0));  // a repeated level is not a change
+    k.t.edge(0, true, ms(0));
+    EXPECT_EQ(k.drain(), "+thrust -thrust +thrust ");
+    EXPECT_EQ(k.t.deadline(), -1);
+}
+
+TEST(Debounce, PopHonoursMax) {
+    Tracker k(0);
+    k.t.edge(0, true, 0);
+    k.t.edge(1, true, 0);
+    k.t.edge(0, false, 0);
+    InputEvent ev[2];
+    EXPECT_EQ(k.t.pop(ev, 2), 2);
+    EXPECT_EQ(ev[0].control, Control::thrust);
+    EXPECT_TRUE(ev[0].pressed);
+    EXPECT_EQ(ev[1].control, Control::left);
+    EXPECT_EQ(k.drain(), "-thrust ");
+}
+
+// ---------------------------------------------------------------------------------------------
+// print_input_events over a pipe: each byte written is one event ('T' press thrust, 't' release)
+// ---------------------------------------------------------------------------------------------
+
+class PipeSource final : public p::InputSource {
+public:
+    PipeSource() {
+        if (pipe2(fd_, O_NONBLOCK | O_CLOEXEC) != 0) std::abort();
+    }
+    ~PipeSource() override {
+        if (fd_[0] >= 0) close(fd_[0]);
+        if (fd_[1] >= 0) close(fd_[1]);
+    }
+    std::string describe() const override { return "pipe"; }
+    int fds(pollfd* out, int max) override {
+        if (max < 1) return 0;
+        out[0] = pollfd{fd_[0], POLLIN, 0};
+        return 1;
+    }
+    int read(InputEvent* out, int max, int64_t) override {
+        int n = 0;
+        char c;
+        while (n < max && ::read(fd_[0], &c, 1) == 1) {
+            const bool pressed = c >= 'A' && c <= 'Z';
+            out[n++] = {pressed ? Control::thrust : Control::left, pressed};
+        }
+        return n;
+    }
+    void send(const char* s) { ASSERT_EQ(::write(fd_[1], s, std::strlen(s)), static_cast<ssize_t>(std::strlen(s))); }
+    int fd_[2] = {-1, -1};
+};
+
+std::string run_print(p::InputSource& src, long max, double timeout, int& rc) {
+    std::FILE* f = std::tmpfile();
+    rc = p::print_input_events(src, max, timeout, f);
+    std::rewind(f);
+    std::string s;
+    for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
+    std::fclose(f);
+    return s;
+}
+
+TEST(PrintEvents, StopsAfterMaxEvents) {
+    PipeSource src;
+    src.send("TtT");
+    int rc = -1;
+    EXPECT_EQ(run_print(src, 2, 5.0, rc), "press thrust\nrelease left\n");
+    EXPECT_EQ(rc, 0);
+}
+
+TEST(PrintEvents, TimeoutEndsAQuietWait) {
+    PipeSource src;
+    src.send("T");
+    int rc = -1;
+    const auto t0 = std::chrono::steady_clock::now();
+    EXPECT_EQ(run_print(src, 0, 0.2, rc), "press thrust\n");
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(rc, 0);
+    EXPECT_GE(s, 0.2);
+    EXPECT_LT(s, 5.0);
+}
+
+TEST(PrintEvents, BadFdIsAnErrorNotASpin) {
+    PipeSource src;
+    close(src.fd_[0]);
+    src.fd_[0] = 1000;  // not open: poll() says POLLNVAL every time
+    ASSERT_EQ(fcntl(src.fd_[0], F_GETFD), -1);
+    int rc = -1;
+    run_print(src, 0, 0, rc);  // no timeout and no limit: it must end by itself
+    src.fd_[0] = -1;
+    EXPECT_NE(rc, 0);
+}
+
+TEST(PrintEvents, BadArguments) {
+    PipeSource src;
+    int rc = -1;
+    run_print(src, -1, 0, rc);
+    EXPECT_NE(rc, 0);
+    run_print(src, 0, -1, rc);
+    EXPECT_NE(rc, 0);
+}
+
+}  // namespace
