@@ -1,0 +1,44 @@
+# `cmake --install` into a scratch prefix: the binary, every board file and the systemd unit
+# land where the README says, and the unit starts the installed binary.
+#   cmake -DBUILD=<build dir> -DPREFIX=<scratch> -DSOURCE=<source dir> -P install_layout.cmake
+file(REMOVE_RECURSE ${PREFIX})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "cmake --install failed (${rc}): ${err}")
+endif()
+foreach(f bin/noneuclid lib/systemd/system/noneuclid.service)
+    if(NOT EXISTS ${PREFIX}/${f})
+        message(FATAL_ERROR "${PREFIX}/${f} was not installed")
+    endif()
+endforeach()
+file(GLOB boards RELATIVE ${SOURCE}/boards ${SOURCE}/boards/*.toml)
+list(LENGTH boards n)
+if(n LESS 5)
+    message(FATAL_ERROR "expected at least 5 board files in ${SOURCE}/boards, found ${n}")
+endif()
+foreach(b ${boards})
+    if(NOT EXISTS ${PREFIX}/share/noneuclid/boards/${b})
+        message(FATAL_ERROR "board file ${b} was not installed to ${PREFIX}/share/noneuclid/boards")
+    endif()
+endforeach()
+file(READ ${PREFIX}/lib/systemd/system/noneuclid.service unit)
+# The unit starts the binary with its configure-time path: the install prefix of the build.
+execute_process(COMMAND ${CMAKE_COMMAND} -L -N ${BUILD} OUTPUT_VARIABLE cache)
+string(REGEX MATCH "CMAKE_INSTALL_PREFIX:PATH=([^\n]*)" _ "${cache}")
+set(configured ${CMAKE_MATCH_1})
+foreach(want "ExecStart=${configured}/bin/noneuclid run --display fbdev" "Conflicts=getty@tty1.service"
+             "TTYPath=/dev/tty1" "Restart=always" "SupplementaryGroups=video input gpio" "StandardInput=tty")
+    string(FIND "${unit}" "${want}" at)
+    if(at LESS 0)
+        message(FATAL_ERROR "the installed unit lacks '${want}':\n${unit}")
+    endif()
+endforeach()
+# The installed binary finds the installed boards when told where (NONEUCLID_BOARDS).
+execute_process(COMMAND ${CMAKE_COMMAND} -E env NONEUCLID_BOARDS=${PREFIX}/share/noneuclid/boards
+                ${PREFIX}/bin/noneuclid run --display fbdev:/nonexistent/fb --board rpi4 --input none
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT err MATCHES "board Raspberry Pi 4[^\n]*${PREFIX}/share/noneuclid/boards/rpi4.toml" OR NOT rc EQUAL 2)
+    message(FATAL_ERROR "the installed binary did not take rpi4 from the installed boards (exit ${rc}):\n${err}")
+endif()
+message(STATUS "installed: bin/noneuclid, ${n} board files, the unit")
