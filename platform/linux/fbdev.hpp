@@ -53,6 +53,7 @@ private:
     render::Canvas back_;
     bool pan_ok_ = false, vsync_ok_ = true;
     int shown_page_ = 0;
+    int instant_vsyncs_ = 0;
 };
 
 // The virtual terminal on stdin, owned for the program's life (see above). Safe to construct
