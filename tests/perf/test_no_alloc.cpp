@@ -1,6 +1,8 @@
 // No heap allocation per frame in steady state: a counting global operator new, switched on
 // only around the frames, while the world steps and the whole frame is drawn (fixed and double
-// engines, kiosk and stress, aliased and anti-aliased, every pixel format).
+// engines, kiosk and stress, aliased and anti-aliased, every pixel format), on one thread and
+// over a WorkerPool of 2 and 3 threads (the counter is global and atomic: it sees the workers'
+// allocations too; the pool and its scratch are made before counting starts, once).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -32,13 +34,22 @@ namespace {
 using namespace noneuclid;
 
 template <class T>
-long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool aa, int frames) {
+long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool aa, int frames, int threads = 0) {
     world::Scene scene;
     const world::SceneParams params{30, 6, 6};
     EXPECT_TRUE(world::builtin_scene(scene_name, params, scene));
     world::World<T> w(scene);
     render::DrawScratch<T> scratch;
     scratch.prepare(w);
+    render::WorkerPool pool(threads > 0 ? threads : 1);
+    render::ParallelScratch<T> par;
+    par.prepare(w, pool);
+    auto draw = [&](const render::Canvas& c, const render::DrawOptions& o) {
+        if (threads > 0)
+            render::draw_world(c, w, o, par, pool);
+        else
+            render::draw_world(c, w, o, scratch);
+    };
     std::vector<uint8_t> px(static_cast<std::size_t>(320 * 240 * f.bytes_per_pixel()));
     const render::Canvas c(px.data(), 320, 240, 320 * f.bytes_per_pixel(), f);
     render::DrawOptions o;
@@ -46,12 +57,12 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
     render::HudInfo hud;
     w.press(world::Action::thrust);  // the ship accelerates: the velocity path runs too
     w.press(world::Action::curvature_down);
-    for (int i = 0; i < 3; ++i) w.step(T(1.0 / 60)), render::draw_world(c, w, o, scratch);  // warm up
+    for (int i = 0; i < 3; ++i) w.step(T(1.0 / 60)), draw(c, o);  // warm up
     g_allocations = 0;
     g_counting = true;
     for (int i = 0; i < frames; ++i) {
         w.step(T(1.0 / 60));
-        render::draw_world(c, w, o, scratch);
+        draw(c, o);
         hud.K = static_cast<double>(w.K);
         render::draw_hud(c, render::builtin_font(), hud);
     }
@@ -65,6 +76,15 @@ TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
             EXPECT_EQ(allocations_per_frames<fx::fixed>(s, render::PixelFormat::rgb565(), aa, 120), 0) << s;
             EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), aa, 120), 0) << s;
             EXPECT_EQ(allocations_per_frames<float>(s, render::PixelFormat::rgb888(), aa, 60), 0) << s;
+        }
+}
+
+TEST(NoAllocation, ThreadedFramesAllocateNothing) {
+    for (const char* s : {"kiosk", "stress"})
+        for (int threads : {2, 3}) {
+            EXPECT_EQ(allocations_per_frames<fx::fixed>(s, render::PixelFormat::rgb565(), false, 120, threads), 0) << s;
+            EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), true, 60, threads), 0) << s;
+            EXPECT_EQ(allocations_per_frames<float>(s, render::PixelFormat::rgb888(), false, 30, threads), 0) << s;
         }
 }
 

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Instructions per kiosk frame on ARM, counted under qemu-user by ../shared/tools/arm-insncount
+# (repeatable, unlike times): the whole frame and each stage, fixed, double and float engines.
+#
+#   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
+#   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)
+#   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
+#
+# Per frame = (count with N frames - count with 0 frames) / N; both runs build the world and
+# draw one warm-up frame (tests/bench/frame_probe.cpp). frame = world step + draw_world +
+# copy_canvas to a second buffer (the kiosk's per-frame work, HUD aside).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+target=${1:-aarch64}
+scene=${2:-kiosk}
+size=${3:-800x480}
+format=${4:-rgb565}
+case $target in
+    aarch64) arch=aarch64 ;;
+    armhf) arch=arm ;;
+    *) echo "arm-frame-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
+esac
+counter=${ARM_INSNCOUNT:-../shared/tools/arm-insncount/arm-insncount}
+if [ ! -x "$counter" ]; then
+    echo "arm-frame-insncount.sh: $counter not found: check out ../shared beside this repository or set ARM_INSNCOUNT." >&2
+    exit 2
+fi
+build=${BUILD_DIR:-build/$target}
+if [ ! -f "$build/CMakeCache.txt" ]; then cmake --preset "$target" -B "$build" >/dev/null; fi
+cmake --build "$build" --target frame_probe -j 2 >/dev/null
+probe=$build/frame_probe
+n=${FRAMES:-10}
+
+count() {  # count STAGE ENGINE FRAMES -> instructions
+    "$counter" "$arch" "$probe" "$1" "$2" "$scene" "$size" "$format" "$3" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+}
+per_frame() {
+    local base full
+    base=$(count "$1" "$2" 0)
+    full=$(count "$1" "$2" "$n")
+    echo $(( (full - base) / n ))
+}
+echo "instructions per frame on $target: $scene at $size $format (qemu-user, N=$n frames)"
+echo
+echo "| stage | fixed | double | float | double/fixed |"
+echo "|---|---:|---:|---:|---:|"
+for stage in frame step backdrop geometry raster copy memcpy; do
+    f=$(per_frame "$stage" fixed)
+    d=$(per_frame "$stage" double)
+    fl=$(per_frame "$stage" float)
+    ratio=$(awk -v d="$d" -v f="$f" 'BEGIN { if (f > 0) printf "%.2f", d / f; else print "-" }')
+    echo "| $stage | $f | $d | $fl | $ratio |"
+done
