@@ -25,8 +25,8 @@
 #if NONEUCLID_HAVE_PNG
 #include "desktop/png_file.hpp"
 #endif
-#include "render/draw_world.hpp"
-#include "render/hud.hpp"
+#include "render/session.hpp"
+#include "world/controls.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::platform {
@@ -298,27 +298,27 @@ Key key_of(KeySym s, world::Action& action) {
 template <class W>
 int run_loop(X11Window& x, const world::Scene& scene, const RunOptions& o) {
     using T = typename W::scalar;
-    W world(scene);
-    render::DrawScratch<T> scratch;
-    scratch.prepare(world);
-    render::DrawOptions draw;
-    draw.projection = o.projection;
-    draw.antialias = o.antialias;
 #if NONEUCLID_HAVE_DESKTOP
     const LoadedFont loaded = default_hud_font(nullptr);
     const render::Font& font = loaded.font;
 #else
     const render::Font& font = render::builtin_font();
 #endif
-    bool hud = o.hud, quit = false;
-    const T dt = T(1.0 / 60);
+    render::SessionOptions so;
+    so.draw.projection = o.projection;
+    so.draw.antialias = o.antialias;
+    so.hud = o.hud;
+    so.scene_name = scene.name.c_str();
+    so.controls = kDesktopControls;
+    render::Session<W> session(scene, so, font);
+    W& world = session.world;
+    bool quit = false;
     const long period_ns = static_cast<long>(1e9 / o.fps + 0.5);
     timespec next{};
     clock_gettime(CLOCK_MONOTONIC, &next);
     const double start = now_seconds();
-    double fps = 0, fps_since = start;
+    double fps_since = start;
     long fps_frames = 0, frames = 0;
-
     while (!quit && (o.frames == 0 || frames < o.frames)) {
         while (XPending(x.dpy)) {
             XEvent ev;
@@ -326,25 +326,23 @@ int run_loop(X11Window& x, const world::Scene& scene, const RunOptions& o) {
             if (ev.type == KeyPress || ev.type == KeyRelease) {
                 world::Action action{};
                 const Key k = key_of(XLookupKeysym(&ev.xkey, 0), action);
+                const auto control = static_cast<world::Control>(action);  // the same order
                 if (ev.type == KeyRelease) {
-                    if (k == Key::action) world.release(action);
+                    if (k == Key::action) session.control({control, false});
                     continue;
                 }
                 switch (k) {
                     case Key::quit: quit = true; break;
-                    case Key::action: world.press(action); break;
+                    case Key::action: session.control({control, true}); break;
                     case Key::k_minus1: world.K = T(-1); break;
                     case Key::k_zero: world.K = T(0); break;
                     case Key::k_plus1: world.K = T(1); break;
-                    case Key::projection: {
-                        const int n = static_cast<int>(std::size(geo::kProjections));
-                        int i = 0;
-                        while (i < n && geo::kProjections[i] != draw.projection) ++i;
-                        draw.projection = geo::kProjections[(i + 1) % n];
+                    case Key::projection: session.control({world::Control::projection, true}); break;
+                    case Key::hud: session.control({world::Control::hud, true}); break;
+                    case Key::reset:
+                        session.control({world::Control::reset, true});
+                        session.control({world::Control::reset, false});
                         break;
-                    }
-                    case Key::hud: hud = !hud; break;
-                    case Key::reset: world.press(world::Action::reset), world.release(world::Action::reset); break;
                     case Key::none: break;
                 }
             } else if (ev.type == ConfigureNotify) {
@@ -357,21 +355,11 @@ int run_loop(X11Window& x, const world::Scene& scene, const RunOptions& o) {
         if (x.pending_w > 0 && (x.pending_w != x.width || x.pending_h != x.height)) {
             if (!x.create_image(x.pending_w, x.pending_h)) return 2;
         }
-        world.step(dt);
-        render::draw_world(x.canvas, world, draw, scratch);
-        if (hud) {
-            render::HudInfo info;
-            info.K = static_cast<double>(world.K);
-            info.fps = fps;
-            info.scene = scene.name.c_str();
-            info.projection = geo::projection_name(draw.projection);
-            info.controls = kDesktopControls;
-            render::draw_hud(x.canvas, font, info);
-        }
+        session.frame(x.canvas);
         x.show();
         ++frames, ++fps_frames;
         const double t = now_seconds();
-        if (t - fps_since >= 0.5) fps = static_cast<double>(fps_frames) / (t - fps_since), fps_since = t, fps_frames = 0;
+        if (t - fps_since >= 0.5) session.fps = static_cast<double>(fps_frames) / (t - fps_since), fps_since = t, fps_frames = 0;
 
         // Pacing: sleep until the next frame's deadline; after a stall, start again from now
         // rather than racing to catch up.

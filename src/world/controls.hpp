@@ -17,6 +17,15 @@ enum class Control : uint8_t {
     quit,        // leave the program (on press; for keyboards, not kiosk buttons)
 };
 inline constexpr int kControlCount = 10;
+static_assert(static_cast<int>(Control::thrust) == static_cast<int>(Action::thrust) &&
+              static_cast<int>(Control::left) == static_cast<int>(Action::turn_left) &&
+              static_cast<int>(Control::right) == static_cast<int>(Action::turn_right) &&
+              static_cast<int>(Control::curvature_up) == static_cast<int>(Action::curvature_up) &&
+              static_cast<int>(Control::curvature_down) == static_cast<int>(Action::curvature_down) &&
+              static_cast<int>(Control::preset) == static_cast<int>(Action::next_preset) &&
+              static_cast<int>(Control::reset) == static_cast<int>(Action::reset) &&
+              static_cast<int>(Control::projection) == kActionCount,
+              "the first controls are the world's actions, in the same order");
 
 inline const char* control_name(Control c) {
     static const char* const names[] = {"thrust", "left", "right", "curvature_up", "curvature_down",
