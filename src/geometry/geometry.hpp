@@ -335,4 +335,85 @@ ScreenPoint<T> to_screen(T rho, T theta, T cx, T cy, T scale) {
     return {cx + scale * rho * cos(theta), cy - scale * rho * sin(theta)};
 }
 
+// ---- edges straight to the projection plane --------------------------------------------------
+
+// (c, for drawing) The points of edge_points, projected: out(k, visible, X, Y) with
+// (X, Y) = rho (cos theta, sin theta), the point in the projection plane relative to O
+// (pixels: cx + scale X, cy - scale Y). The interior points skip the polar reading: for the
+// 3-vector (w, x, y) = (C_K(r), S_K(r) cos theta, S_K(r) sin theta), rho(r) / S_K(r) depends on
+// w and S^2 = x^2 + y^2 alone, so (X, Y) = (x, y) rho/S with, for g = 2 / (1 + w) (w >= 0),
+//   equidistant    r / S = g ATf(K S^2 g^2 / 4)     (arc_K without its square root)
+//   stereographic  2 T_K(r/2) / S = g
+//   Lambert        2 S_K(r/2) / S = sqrt(g)
+// and no atan2, hypot, sine or cosine is needed per point. The end points, points past the
+// sphere's equator (w < 0), points too far out for S^2 in the scalar, antipodal edges, and the
+// gnomonic and orthographic projections take the polar path (project, then the bearing's cosine
+// and sine): in fixed point 1/w near the gnomonic horizon, and x, y read straight off the
+// 3-vector in the orthographic view, were measured less accurate than the polar path
+// (tests/perf/test_fast_paths.cpp holds the others to the polar path's error).
+template <class T>
+struct ProjectedPoint {
+    bool visible = true;
+    T X{}, Y{};
+};
+template <class T>
+ProjectedPoint<T> project_polar(T K, Polar<T> p, Projection proj) {
+    using std::cos, std::sin;
+    const Projected<T> pr = project(K, p.r, proj);
+    if (!pr.visible) return {false, T(0), T(0)};
+    return {true, pr.rho * cos(p.theta), pr.rho * sin(p.theta)};
+}
+template <class T>
+ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
+    using std::sqrt;
+    const T big = num<T>(100);
+    if (v.w < T(0) || v.x > big || v.x < -big || v.y > big || v.y < -big)
+        return project_polar(K, to_polar(K, v), proj);
+    T f;
+    switch (proj) {
+        case Projection::azimuthal_equidistant: {
+            const T g = quotient(T(2), T(1) + v.w);
+            const T s2 = dot2(v.x, v.x, v.y, v.y);
+            f = mul_ATf(g, quarter(K * s2 * g * g));
+            break;
+        }
+        case Projection::stereographic: f = quotient(T(2), T(1) + v.w); break;
+        case Projection::lambert_equal_area: f = sqrt(quotient(T(2), T(1) + v.w)); break;
+        default: return project_polar(K, to_polar(K, v), proj);
+    }
+    return {true, v.x * f, v.y * f};
+}
+template <class T, class Out>
+void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& out) {
+    const T d = distance(K, p, q);
+    const T sfd = Sf(K * d * d);
+    auto polar = [&](int k, Polar<T> x) {
+        const ProjectedPoint<T> pp = project_polar(K, x, proj);
+        out(k, pp.visible, pp.X, pp.Y);
+    };
+    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) {  // antipodal: as edge_points
+        const T heading = p.r > T(0) ? p.theta : q.theta;
+        polar(0, p);
+        for (int k = 1; k < n; ++k) polar(k, walk(K, p, heading, d * T(k) / T(n)).end);
+        polar(n, q);
+        return;
+    }
+    const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
+    polar(0, p);
+    if (n > 1 && n < 32768) {
+        Fractions<T> f(n);
+        const auto by_sfd = divisor(sfd);
+        for (int k = 1; k < n; ++k) {
+            f.next();
+            const T t = f.t(k), u = f.u(k);
+            const T a = by_sfd(u * Sf(K * (u * d) * (u * d)));
+            const T b = by_sfd(t * Sf(K * (t * d) * (t * d)));
+            const ProjectedPoint<T> pp =
+                project_vec(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}, proj);
+            out(k, pp.visible, pp.X, pp.Y);
+        }
+    }
+    polar(n, q);
+}
+
 }  // namespace noneuclid::geo

@@ -164,24 +164,36 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
     const std::size_t edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
     std::size_t count = 0;
     bool open = false;  // a run of visible points is under way
-    auto add = [&](geo::Polar<T> p) {
-        const geo::Projected<T> pr = geo::project(world.K, p.r, o.projection);
-        if (!pr.visible) {
+    auto add_xy = [&](bool visible, T X, T Y) {
+        if (!visible) {
             if (open) out[count++] = kBreak, open = false;
             return;
         }
-        out[count++] = to_pixels(geo::to_screen(pr.rho, p.theta, m.cx, m.cy, m.scale));
+        out[count++] = to_pixels(geo::ScreenPoint<T>{m.cx + m.scale * X, m.cy - m.scale * Y});
         open = true;
+    };
+    auto add = [&](geo::Polar<T> p) {
+        const geo::ProjectedPoint<T> pp = geo::project_polar(world.K, p, o.projection);
+        add_xy(pp.visible, pp.X, pp.Y);
     };
     if (edges == 0) {
         add(verts[0]);
         return count;
     }
-    for (std::size_t e = 0; e < edges; ++e)
-        W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
-            if (k == 0 && e > 0) return;  // shared with the previous edge
-            add(p);
-        });
+    for (std::size_t e = 0; e < edges; ++e) {
+        if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>) {
+            // Straight from the 3-vector to the projection plane (geometry.hpp, edge_projected).
+            geo::edge_projected(world.K, verts[e], verts[(e + 1) % n], level, o.projection, [&](int k, bool vis, T X, T Y) {
+                if (k == 0 && e > 0) return;  // shared with the previous edge
+                add_xy(vis, X, Y);
+            });
+        } else {
+            W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
+                if (k == 0 && e > 0) return;
+                add(p);
+            });
+        }
+    }
     return count;
 }
 
