@@ -1,8 +1,5 @@
 #include "world/board.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "geometry/geometry.hpp"
 #include "world/toml_reader.hpp"
 
@@ -105,39 +102,19 @@ void read_board(const toml::table& root, Board& b) {
 
 }  // namespace
 
-std::string BoardError::to_string() const {
-    std::ostringstream o;
-    o << file;
-    if (line > 0) o << ':' << line << ':' << column;
-    o << ": " << message;
-    return o.str();
-}
-
 bool parse_board(const std::string& text, const std::string& name, Board& out, BoardError& error) {
     out = Board{};
     out.file = name;
-    try {
-        const toml::table root = toml::parse(text, name);
-        read_board(root, out);
-        return true;
-    } catch (const toml::parse_error& e) {
-        error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
-                 "not valid TOML: " + std::string(e.description())};
-    } catch (const Bad& b) {
-        error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
-    }
-    return false;
+    return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_board(root, out); });
 }
 
 bool load_board_file(const std::string& path, Board& out, BoardError& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::string text;
+    if (!tomlr::read_text_file(path, text)) {
         error = {path, 0, 0, "cannot read the board file: check the path, or name a board in boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic)"};
         return false;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_board(text.str(), path, out, error);
+    return parse_board(text, path, out, error);
 }
 
 }  // namespace noneuclid::world

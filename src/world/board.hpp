@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "world/controls.hpp"
+#include "world/scene_file.hpp"  // SceneError
 
 namespace noneuclid::world {
 
@@ -76,12 +77,8 @@ struct Board {
     }
 };
 
-struct BoardError {
-    std::string file;
-    long line = 0, column = 0;
-    std::string message;
-    std::string to_string() const;  // "file:line:column: message"
-};
+// Where and what: "file:line:column: message", like a scene file's errors.
+using BoardError = SceneError;
 
 bool parse_board(const std::string& text, const std::string& name, Board& out, BoardError& error);
 bool load_board_file(const std::string& path, Board& out, BoardError& error);

@@ -100,28 +100,16 @@ std::string SceneError::to_string() const {
 bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error) {
     out = Scene{};
     out.name = name;
-    try {
-        const toml::table root = toml::parse(text, name);
-        read_scene(root, out);
-        return true;
-    } catch (const toml::parse_error& e) {
-        error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
-                 "not valid TOML: " + std::string(e.description())};
-    } catch (const Bad& b) {
-        error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
-    }
-    return false;
+    return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_scene(root, out); });
 }
 
 bool load_scene_file(const std::string& path, Scene& out, SceneError& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::string text;
+    if (!tomlr::read_text_file(path, text)) {
         error = {path, 0, 0, "cannot read the scene file: check the path, or name a built-in scene (see --help)"};
         return false;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_scene(text.str(), path, out, error);
+    return parse_scene(text, path, out, error);
 }
 
 }  // namespace noneuclid::world

@@ -11,7 +11,10 @@
 #include <string>
 #include <toml++/toml.h>
 
+#include <fstream>
+
 #include "world/scene.hpp"  // Rgb
+#include "world/scene_file.hpp"  // SceneError
 
 namespace noneuclid::world::tomlr {
 
@@ -143,6 +146,33 @@ inline const toml::array* tables(const toml::table& root, const char* key) {
     if (!a || !a->is_array_of_tables())
         throw Bad{n->source(), std::string("expected [[") + key + "]] tables, found " + type_name(*n)};
     return a;
+}
+
+// Parses `text` as TOML and hands the root table to `read`; a syntax error or a Bad thrown by
+// `read` becomes `error` (file:line:column: message). Returns true on success.
+template <class Read>
+bool parse_toml(const std::string& text, const std::string& name, SceneError& error, Read&& read) {
+    try {
+        const toml::table root = toml::parse(text, name);
+        read(root);
+        return true;
+    } catch (const toml::parse_error& e) {
+        error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
+                 "not valid TOML: " + std::string(e.description())};
+    } catch (const Bad& b) {
+        error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
+    }
+    return false;
+}
+
+// The whole file, or false if it cannot be read.
+inline bool read_text_file(const std::string& path, std::string& out) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return false;
+    std::ostringstream text;
+    text << in.rdbuf();
+    out = text.str();
+    return true;
 }
 
 }  // namespace noneuclid::world::tomlr
