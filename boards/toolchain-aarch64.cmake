@@ -23,6 +23,10 @@ set(CMAKE_FIND_ROOT_PATH_MODE_LIBRARY ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_INCLUDE ONLY)
 set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)
 
+# pkg-config answers for the target: Debian's multiarch .pc files (e.g. libgpiod-dev:<arch>,
+# installed after `dpkg --add-architecture <arch>`), never the host's.
+set(ENV{PKG_CONFIG_LIBDIR} /usr/lib/${NONEUCLID_TARGET_TRIPLE}/pkgconfig:/usr/share/pkgconfig)
+
 # Run target programs (tests, gtest discovery) under qemu-user with the sysroot's loader and
 # libraries. Prefer qemu-aarch64 (qemu-user) over qemu-aarch64-static (qemu-user-static).
 find_program(NONEUCLID_QEMU_AARCH64 NAMES qemu-aarch64 qemu-aarch64-static

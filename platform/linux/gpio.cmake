@@ -6,7 +6,8 @@
 # or bookworm-backports unpacked by platform/debian/gpiod2-prefix.sh and named with
 # -DNONEUCLID_GPIOD_PREFIX=<dir>/usr, see the static-gpiod2 preset). Without libgpiod (a cross
 # build without libgpiod-dev:<arch>) gpio_none.cpp says so at run time; evdev still works.
-# Static builds (NONEUCLID_STATIC, or -static in CMAKE_EXE_LINKER_FLAGS) link libgpiod.a.
+# Static builds (NONEUCLID_STATIC, or -static in CMAKE_EXE_LINKER_FLAGS) link libgpiod.a; so do
+# cross builds when the .a is there (the -dev package has it), so the Pi needs no libgpiod2.
 
 if(NOT CMAKE_SYSTEM_NAME STREQUAL "Linux")
     return()
@@ -49,6 +50,9 @@ if(NONEUCLID_GPIOD)
             set(noneuclid_gpiod_libdirs ${${noneuclid_gpiod_pkg}_LIBDIR} ${${noneuclid_gpiod_pkg}_LIBRARY_DIRS})
             if(noneuclid_gpiod_static)
                 set(noneuclid_gpiod_names libgpiod.a)
+            elseif(CMAKE_CROSSCOMPILING)
+                # A binary built to be copied to a Pi: libgpiod inside it, one package fewer there.
+                set(noneuclid_gpiod_names libgpiod.a gpiod)
             else()
                 set(noneuclid_gpiod_names gpiod)
             endif()
@@ -83,7 +87,7 @@ if(noneuclid_gpiod_found)
     target_compile_definitions(noneuclid_input PUBLIC NONEUCLID_HAVE_GPIOD=1
         NONEUCLID_GPIOD_MAJOR=${noneuclid_gpiod_major})
     set(noneuclid_gpiod_kind shared)
-    if(noneuclid_gpiod_static)
+    if(NONEUCLID_GPIOD_LIBRARY MATCHES "\\.a$")
         set(noneuclid_gpiod_kind static)
     endif()
     message(STATUS "libgpiod ${noneuclid_gpiod_version} (v${noneuclid_gpiod_major} API, ${noneuclid_gpiod_kind}): "
@@ -96,6 +100,9 @@ endif()
 target_sources(noneuclid_input PRIVATE linux/gpio_common.cpp linux/evdev.cpp linux/input.cpp)
 target_include_directories(noneuclid_input PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(noneuclid_input PUBLIC noneuclid_world PRIVATE noneuclid_warnings)
+# 64-bit directory offsets on 32-bit ARM: readdir() of a large-offset directory (ext4 hashes,
+# and every directory under qemu-arm on a 64-bit host) fails with EOVERFLOW without it.
+target_compile_definitions(noneuclid_input PUBLIC _FILE_OFFSET_BITS=64)
 
 target_link_libraries(noneuclid PRIVATE noneuclid_input)
 target_compile_definitions(noneuclid PRIVATE NONEUCLID_HAVE_INPUT=1)
