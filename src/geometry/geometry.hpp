@@ -383,11 +383,16 @@ ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
     }
     return {true, v.x * f, v.y * f};
 }
+// With the end points' 3-vectors P = to_vec(K, p), Q = to_vec(K, q) given (a polygon's vertices
+// are each an end of two edges: the caller computes them once), and the start point left out
+// when `with_start` is false (it is the previous edge's end).
 template <class T, class Out>
-void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& out) {
+void edge_projected(T K, Polar<T> p, Polar<T> q, const Vec3<T>& P, const Vec3<T>& Q, int n, Projection proj,
+                    bool with_start, Out&& out) {
     const T d = distance(K, p, q);
     const T sfd = Sf(K * d * d);
     auto polar = [&](int k, Polar<T> x) {
+        if (k == 0 && !with_start) return;
         const ProjectedPoint<T> pp = project_polar(K, x, proj);
         out(k, pp.visible, pp.X, pp.Y);
     };
@@ -398,7 +403,6 @@ void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& o
         polar(n, q);
         return;
     }
-    const Vec3<T> P = to_vec(K, p), Q = to_vec(K, q);
     polar(0, p);
     if (n > 1 && n < 32768) {
         Fractions<T> f(n);
@@ -414,6 +418,10 @@ void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& o
         }
     }
     polar(n, q);
+}
+template <class T, class Out>
+void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& out) {
+    edge_projected(K, p, q, to_vec(K, p), to_vec(K, q), n, proj, true, out);
 }
 
 }  // namespace noneuclid::geo

@@ -59,7 +59,8 @@ std::size_t body_point_capacity(const B& b) {
 template <class T>
 struct DrawScratch {
     std::vector<SubPoint> points;
-    std::vector<geo::Polar<T>> vertices;
+    std::vector<geo::Polar<T>> vertices;  // the body's vertices, then their 3-vectors:
+    std::vector<geo::Vec3<T>> vectors;    // body_screen_points uses vectors[vertices.size() ...]
     template <class W>
     void prepare(const W& world) {
         std::size_t most = 1, most_v = 1;
@@ -69,6 +70,7 @@ struct DrawScratch {
         }
         points.resize(most);
         vertices.resize(most_v);
+        vectors.resize(most_v);
     }
 };
 
@@ -92,18 +94,23 @@ SubPoint to_pixels(const geo::ScreenPoint<T>& p) {
 }
 
 namespace detail {
-// n pixels of the word w from p on: a few stored one by one, then doubled by memcpy.
-inline void fill_span(uint8_t* p, int n, uint32_t w, int bpp) {
-    if (n <= 0) return;
-    const int first = n < 16 ? n : 16;
-    for (int i = 0; i < first; ++i) std::memcpy(p + i * bpp, &w, static_cast<std::size_t>(bpp));  // little-endian, as set_word
-    const std::size_t total = static_cast<std::size_t>(n) * static_cast<std::size_t>(bpp);
-    std::size_t done = static_cast<std::size_t>(first) * static_cast<std::size_t>(bpp);
-    while (done < total) {
-        const std::size_t c = std::min(done, total - done);
-        std::memcpy(p + done, p, c);
-        done += c;
+// One colour as 48 bytes of pixels (16 pixels of 3 bytes, 24 of 2, 12 of 4: whole pixels in
+// any format), copied in 48-byte blocks: a few vector stores per block, no call per pixel.
+struct SpanPattern {
+    alignas(16) uint8_t bytes[48];
+    int bpp;
+    SpanPattern(uint32_t word, int bytes_per_pixel) : bpp(bytes_per_pixel > 0 ? bytes_per_pixel : 1) {
+        for (int i = 0; i < 48; i += bpp)
+            for (int k = 0; k < bpp; ++k) bytes[i + k] = static_cast<uint8_t>(word >> (8 * k));  // little-endian, as set_word
     }
+};
+// n pixels of the pattern's colour from p on.
+inline void fill_span(uint8_t* p, int n, const SpanPattern& pat) {
+    if (n <= 0) return;
+    const std::size_t total = static_cast<std::size_t>(n) * static_cast<std::size_t>(pat.bpp);
+    std::size_t off = 0;
+    for (; off + 48 <= total; off += 48) std::memcpy(p + off, pat.bytes, 48);
+    if (off < total) std::memcpy(p + off, pat.bytes, total - off);
 }
 }  // namespace detail
 
@@ -113,14 +120,14 @@ inline void fill_span(uint8_t* p, int n, uint32_t w, int bpp) {
 template <class T>
 void draw_backdrop_rows(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOptions& o, int y0, int y1) {
     const int w = c.width(), bpp = c.format().bytes_per_pixel();
-    const uint32_t bg = c.format().pack(o.background), out = c.format().pack(o.outside);
+    const detail::SpanPattern bg(c.format().pack(o.background), bpp), out(c.format().pack(o.outside), bpp);
     const double r = static_cast<double>(m.scale) * static_cast<double>(R);
     const double cx = static_cast<double>(m.cx), cy = static_cast<double>(m.cy);
     y0 = std::max(y0, 0), y1 = std::min(y1, c.height());
     for (int y = y0; y < y1; ++y) {
         uint8_t* row = c.row(y);
         if (!o.shade_outside) {
-            detail::fill_span(row, w, bg, bpp);
+            detail::fill_span(row, w, bg);
             continue;
         }
         const double dy = y + 0.5 - cy;
@@ -132,12 +139,12 @@ void draw_backdrop_rows(const Canvas& c, const ScreenMap<T>& m, T R, const DrawO
         }
         const int a = std::clamp(in0, 0, w), b = std::clamp(in1 + 1, 0, w);
         if (a >= b) {
-            detail::fill_span(row, w, out, bpp);
+            detail::fill_span(row, w, out);
             continue;
         }
-        detail::fill_span(row, a, out, bpp);
-        detail::fill_span(row + static_cast<std::ptrdiff_t>(a) * bpp, b - a, bg, bpp);
-        detail::fill_span(row + static_cast<std::ptrdiff_t>(b) * bpp, w - b, out, bpp);
+        detail::fill_span(row, a, out);
+        detail::fill_span(row + static_cast<std::ptrdiff_t>(a) * bpp, b - a, bg);
+        detail::fill_span(row + static_cast<std::ptrdiff_t>(b) * bpp, w - b, out);
     }
 }
 
@@ -152,10 +159,11 @@ void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOption
 // body_point_capacity(b)) as one polyline with kBreak where a point cannot be shown. Returns
 // the number of entries written. Reads the world, writes only verts and out: bodies can be
 // done on different threads at once.
+// vecs (room for b.local.size()) receives the vertices' 3-vectors.
 template <class W>
 std::size_t body_screen_points(const W& world, const world::Body<typename W::scalar>& b,
                                const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-                               geo::Polar<typename W::scalar>* verts, SubPoint* out) {
+                               geo::Polar<typename W::scalar>* verts, geo::Vec3<typename W::scalar>* vecs, SubPoint* out) {
     using T = typename W::scalar;
     const std::size_t n = b.local.size();
     if (n == 0) return 0;
@@ -180,13 +188,15 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         add(verts[0]);
         return count;
     }
+    if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>)
+        for (std::size_t i = 0; i < n; ++i) vecs[i] = geo::to_vec(world.K, verts[i]);
     for (std::size_t e = 0; e < edges; ++e) {
         if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>) {
-            // Straight from the 3-vector to the projection plane (geometry.hpp, edge_projected).
-            geo::edge_projected(world.K, verts[e], verts[(e + 1) % n], level, o.projection, [&](int k, bool vis, T X, T Y) {
-                if (k == 0 && e > 0) return;  // shared with the previous edge
-                add_xy(vis, X, Y);
-            });
+            // Straight from the 3-vector to the projection plane (geometry.hpp, edge_projected);
+            // an edge's first point is the previous edge's last.
+            const std::size_t f = (e + 1) % n;
+            geo::edge_projected(world.K, verts[e], verts[f], vecs[e], vecs[f], level, o.projection, e == 0,
+                                [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); });
         } else {
             W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
                 if (k == 0 && e > 0) return;
@@ -219,7 +229,7 @@ Rgb body_color(const B& b) {
 template <class W>
 void draw_body(const Canvas& c, const W& world, const world::Body<typename W::scalar>& b, const ScreenMap<typename W::scalar>& m,
                const DrawOptions& o, DrawScratch<typename W::scalar>& s) {
-    const std::size_t count = body_screen_points(world, b, m, o, s.vertices.data(), s.points.data());
+    const std::size_t count = body_screen_points(world, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
     draw_screen_points(c, s.points.data(), count, body_color(b), LineStyle{o.antialias, o.line_width});
 }
 
@@ -244,6 +254,7 @@ struct ParallelScratch {
     std::vector<SubPoint> points;
     std::vector<std::size_t> offset, count;
     std::vector<geo::Polar<T>> vertices;  // threads x most_v
+    std::vector<geo::Vec3<T>> vectors;    // threads x most_v
     std::size_t most_v = 1;
     std::unique_ptr<std::atomic<uint32_t>[]> ready;
     std::size_t bodies = 0;
@@ -261,6 +272,7 @@ struct ParallelScratch {
         }
         points.resize(std::max<std::size_t>(offset[bodies], 1));
         vertices.resize(most_v * static_cast<std::size_t>(pool.size()));
+        vectors.resize(most_v * static_cast<std::size_t>(pool.size()));
         ready.reset(new std::atomic<uint32_t>[bodies > 0 ? bodies : 1]());
         generation = 0;
     }
@@ -301,6 +313,7 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
                 s.count[idx] = (b.desc->grid ? !o.grids : !o.bodies)
                                    ? 0
                                    : body_screen_points(world, b, m, o, s.vertices.data() + s.most_v * static_cast<std::size_t>(tid),
+                                                        s.vectors.data() + s.most_v * static_cast<std::size_t>(tid),
                                                         s.points.data() + s.offset[idx]);
                 s.ready[idx].store(gen, std::memory_order_release);
                 return true;

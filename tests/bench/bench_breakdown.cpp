@@ -56,7 +56,7 @@ struct Setup {
         render::draw_world(c, wd, o, scratch);
         for (const auto& b : wd.bodies) {
             std::vector<render::SubPoint> p(render::body_point_capacity(b));
-            const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), p.data());
+            const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
             pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
             counts.push_back(k);
         }
@@ -76,7 +76,7 @@ void stage(benchmark::State& st, const std::string& which, int w, int h, render:
                                          static_cast<double>(s.m.scale) * static_cast<double>(s.wd.R), s.o.outside);
         } else if (which == "geometry") {
             std::size_t k = 0;
-            for (const auto& b : s.wd.bodies) k += render::body_screen_points(s.wd, b, s.m, s.o, s.scratch.vertices.data(), s.scratch.points.data());
+            for (const auto& b : s.wd.bodies) k += render::body_screen_points(s.wd, b, s.m, s.o, s.scratch.vertices.data(), s.scratch.vectors.data(), s.scratch.points.data());
             benchmark::DoNotOptimize(k);
         } else if (which == "raster") {
             std::size_t at = 0;

@@ -98,7 +98,7 @@ void screen(benchmark::State& st, const char* scene) {
     for (auto _ : st) {
         std::size_t total = 0;
         for (std::size_t i = 0; i < w.bodies.size(); ++i)
-            total += render::body_screen_points(w, w.bodies[i], m, o, s.vertices.data(), s.points.data());
+            total += render::body_screen_points(w, w.bodies[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
         benchmark::DoNotOptimize(s.points.data());
         benchmark::ClobberMemory();
         n = static_cast<double>(total);

@@ -44,7 +44,7 @@ void run(benchmark::State& st, Point p, bool raster) {
         if (raster)
             render::draw_world(c, wd, o, scratch, false);
         else
-            for (const auto& b : wd.bodies) benchmark::DoNotOptimize(render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.points.data()));
+            for (const auto& b : wd.bodies) benchmark::DoNotOptimize(render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), scratch.points.data()));
         benchmark::ClobberMemory();
     }
     st.counters["points"] = static_cast<double>(p.s) * p.v * p.i;

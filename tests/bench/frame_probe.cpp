@@ -53,7 +53,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     std::vector<std::size_t> counts;
     for (const auto& b : wd.bodies) {
         std::vector<render::SubPoint> p(render::body_point_capacity(b));
-        const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), p.data());
+        const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
         pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
         counts.push_back(k);
     }
@@ -63,7 +63,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         else if (stage == "step") wd.step(dt);
         else if (stage == "backdrop") render::draw_backdrop(c, m, wd.R, o);
         else if (stage == "geometry") {
-            for (const auto& b : wd.bodies) check += render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.points.data());
+            for (const auto& b : wd.bodies) check += render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), scratch.points.data());
         } else if (stage == "raster") {
             std::size_t at = 0;
             for (std::size_t k = 0; k < wd.bodies.size(); ++k) {
