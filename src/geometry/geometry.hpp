@@ -178,6 +178,20 @@ Walk<T> walk(T K, Polar<T> p, T heading, T b) {
     return out;
 }
 
+// Only the end of walk(K, p, heading, b), the same bits, without the carried direction (a
+// body's vertices need no more).
+template <class T>
+Polar<T> walk_end(T K, Polar<T> p, T heading, T b) {
+    using std::atan2, std::cos, std::sin;
+    const T delta = heading - p.theta;
+    const T cd = cos(delta), sd = sin(delta);
+    const T sa = S_K(K, p.r), ca = C_K(K, p.r), sb = S_K(K, b), cb = C_K(K, b);
+    const T qw = dot2(ca, cb, -K * sa, sb * cd);
+    const T qx = dot2(sa, cb, ca * sb, cd);
+    const T qy = sb * sd;
+    return {arc_K(K, hypot(qx, qy), qw), wrap_pi(p.theta + atan2(qy, qx))};
+}
+
 // The direction (carried frame at p) of the geodesic from p toward q. The component of q
 // across p's outward radial is S_q sin D, along it C_p S_q cos D - S_p C_q (D = theta_q -
 // theta_p). atan2(0, 0) = 0 when q = p.
@@ -197,7 +211,7 @@ T bearing(T K, Polar<T> p, Polar<T> q) {
 //     the local polar vertex (rho, phi from the facing).
 template <class T>
 Polar<T> vertex_position(T K, Polar<T> centre, T facing, Polar<T> local) {
-    return walk(K, centre, facing + local.theta, local.r).end;
+    return walk_end(K, centre, facing + local.theta, local.r);
 }
 
 // (b) An edge: its length and the angle at O between its end points' position vectors.

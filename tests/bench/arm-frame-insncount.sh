@@ -5,6 +5,7 @@
 #   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
 #   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)
 #   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
+#   K=-0.6 to set the curvature (the kiosk starts at K = 0); FRAMES=N (default 10)
 #
 # Per frame = (count with N frames - count with 0 frames) / N; both runs build the world and
 # draw one warm-up frame (tests/bench/frame_probe.cpp). frame = world step + draw_world +
@@ -32,7 +33,11 @@ probe=$build/frame_probe
 n=${FRAMES:-10}
 
 count() {  # count STAGE ENGINE FRAMES -> instructions
-    "$counter" "$arch" "$probe" "$1" "$2" "$scene" "$size" "$format" "$3" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+    if [ -n "${K:-}" ]; then
+        "$counter" "$arch" "$probe" "$1" "$2" "$scene" "$size" "$format" "$3" 1 "$K" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+    else
+        "$counter" "$arch" "$probe" "$1" "$2" "$scene" "$size" "$format" "$3" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+    fi
 }
 per_frame() {
     local base full
@@ -40,7 +45,7 @@ per_frame() {
     full=$(count "$1" "$2" "$n")
     echo $(( (full - base) / n ))
 }
-echo "instructions per frame on $target: $scene at $size $format (qemu-user, N=$n frames)"
+echo "instructions per frame on $target: $scene at $size $format${K:+, K = $K} (qemu-user, N=$n frames)"
 echo
 echo "| stage | fixed | double | float | double/fixed |"
 echo "|---|---:|---:|---:|---:|"

@@ -1,10 +1,11 @@
 // Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
 // (../shared/tools/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
-//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS]
+//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
-// ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888.
+// ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888; K sets the
+// curvature (the kiosk starts flat, where the double engine's series are at their cheapest).
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
 #include <cstdio>
@@ -21,12 +22,14 @@ namespace {
 using namespace noneuclid;
 
 template <class T>
-int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads) {
+int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads,
+        const char* K) {
     world::Scene scene;
     if (!world::builtin_scene(scene_name, {}, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
+    if (K) scene.curvature = std::atof(K);
     world::World<T> wd(scene);
     render::DrawScratch<T> scratch;
     scratch.prepare(wd);
@@ -86,7 +89,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
 
 int main(int argc, char** argv) {
     if (argc < 7) {
-        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS]\n");
+        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS [K]]\n");
         return 2;
     }
     int w = 0, h = 0;
@@ -100,10 +103,11 @@ int main(int argc, char** argv) {
                                                    : render::PixelFormat::xrgb8888();
     const long n = std::atol(argv[6]);
     const int threads = argc > 7 ? std::atoi(argv[7]) : 1;
+    const char* K = argc > 8 ? argv[8] : nullptr;
     const std::string e = argv[2];
-    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads);
-    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads);
-    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads);
+    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads, K);
+    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads, K);
+    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads, K);
     std::fprintf(stderr, "frame_probe: engine must be fixed, double or float, not '%s'.\n", argv[2]);
     return 2;
 }

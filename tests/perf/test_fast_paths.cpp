@@ -233,6 +233,25 @@ TEST(FastPaths, ProjectedEdgePointsMatchThePolarPath) {
     }
 }
 
+TEST(FastPaths, WalkEndIsTheEndOfTheWalk) {
+    std::mt19937 rng(53);
+    std::uniform_real_distribution<double> r01(0, 1);
+    for (double K : {-1.0, -0.3, 0.0, 0.4, 1.0})
+        for (int i = 0; i < 5000; ++i) {
+            const geo::Polar<fixed> p{fixed(3.1 * r01(rng)), fixed(6.28 * r01(rng) - 3.14)};
+            const fixed h(6.28 * r01(rng) - 3.14), b(0.8 * r01(rng));
+            const auto w = geo::walk(fixed(K), p, h, b).end;
+            const auto e = geo::walk_end(fixed(K), p, h, b);
+            ASSERT_EQ(w.r.raw(), e.r.raw());
+            ASSERT_EQ(w.theta.raw(), e.theta.raw());
+            const geo::Polar<double> pd{static_cast<double>(p.r), static_cast<double>(p.theta)};
+            const auto wd = geo::walk(K, pd, static_cast<double>(h), static_cast<double>(b)).end;
+            const auto ed = geo::walk_end(K, pd, static_cast<double>(h), static_cast<double>(b));
+            ASSERT_EQ(wd.r, ed.r);
+            ASSERT_EQ(wd.theta, ed.theta);
+        }
+}
+
 TEST(FastPaths, BackdropSpansAreClearPlusShade) {
     for (render::PixelFormat f : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(), render::PixelFormat::rgb888()})
         for (auto [w, h] : {std::pair{800, 480}, std::pair{33, 97}, std::pair{1, 1}, std::pair{480, 480}, std::pair{101, 40}})
