@@ -25,8 +25,8 @@ constexpr size_t kKeyBytes = KEY_MAX / 8 + 1;
 
 bool test_bit(const unsigned char* bits, unsigned bit) { return (bits[bit / 8] >> (bit % 8)) & 1u; }
 
-std::string group_hint(const std::string& path) {
-    return "no permission to open " + path + ": add the user to the input group "
+std::string group_hint(const std::string& what) {
+    return "no permission to open " + what + ": add the user to the input group "
            "(`sudo usermod -aG input $USER`) and log in again";
 }
 
@@ -129,7 +129,7 @@ public:
             }
             if (devices_.empty()) {
                 if (!denied.empty())
-                    error = group_hint(denied) + " (looking for a device with the key codes " + codes + ")";
+                    error = group_hint(denied + " (looking for a device with the key codes " + codes + ")");
                 else
                     error = "no input device has any of the key codes " + codes + " (" +
                             (paths.empty() ? std::string("this system has no /dev/input/event* devices")

@@ -17,6 +17,7 @@
 # Once (the evdev code is the same in every binary), through a uinput key device:
 #   evdev      a key held at start (a press first), press/release, an autorepeat (ignored), release; grabbed
 #   no keys    a board whose codes no device has: the sentence names the codes
+# And as a user outside the gpio and input groups: the permission sentences.
 
 . /t/params.sh
 BOARD=/t/board.toml
@@ -137,6 +138,16 @@ release curvature_up" ]
         "GPIO line 20 (reset" "does not exist on noneuclid-sim ($SIM_DEV), which has 8 lines (0 to 7)"
 done
 
+# permission: a user outside the gpio group (devtmpfs makes the chip root's, mode 0600)
+mkdir -p /etc
+grep -q '^kiosk:' /etc/passwd 2>/dev/null || echo "kiosk:x:1000:1000::/tmp:/bin/sh" >> /etc/passwd
+bin=${BINARIES%% *}
+chmod 600 "$SIM_DEV"
+su -s /bin/sh -c "$bin buttons --board $BOARD --input gpio --timeout 2" kiosk > /dev/null 2> /out/perm-gpio.log
+check "gpio permission: exit 2" [ "$?" = 2 ]
+check "gpio permission: the sentence" contains "$(cat /out/perm-gpio.log)" \
+    "no permission to open $SIM_DEV (looking for the GPIO chip noneuclid-sim): add the user to the gpio group (\`sudo usermod -aG gpio \$USER\`) and log in again"
+
 # evdev through uinput: a key device with KEY_UP (thrust) and KEY_LEFT (left)
 bin=${BINARIES%% *}
 check "evdev.ko loaded" insmod /t/evdev.ko
@@ -165,6 +176,13 @@ release left" ]
 else
     check "uinput device created" false
 fi
+# permission: the same user, outside the input group
+chmod 600 /dev/input/event*
+su -s /bin/sh -c "$bin buttons --board $BOARD --input evdev --timeout 2" kiosk > /dev/null 2> /out/perm-evdev.log
+check "evdev permission: exit 2" [ "$?" = 2 ]
+check "evdev permission: the sentence" contains "$(cat /out/perm-evdev.log)" \
+    "no permission to open /dev/input/event0 (looking for a device with the key codes " \
+    "): add the user to the input group (\`sudo usermod -aG input \$USER\`) and log in again"
 # no keys: a board whose only code (BTN_TRIGGER_HAPPY1, an arcade encoder's) no device has
 # (the VM also has an AT keyboard)
 board_with '/^key = /d; /^action = "thrust"/a key = 704' /tmp/board-nokeys.toml
