@@ -583,7 +583,7 @@ bool open_inputs(const noneuclid::world::Board& b, const std::string& mode,
             if (bb.gpio >= 0) g.buttons.push_back({bb.control, static_cast<unsigned>(bb.gpio), bb.pin});
         auto src = p::open_gpio(g, error);
         if (!src) {
-            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+            std::fprintf(stderr, "noneuclid: %s.\n", error.c_str());
             return false;
         }
         std::fprintf(stderr, "noneuclid: %s\n", src->describe().c_str());
@@ -598,7 +598,7 @@ bool open_inputs(const noneuclid::world::Board& b, const std::string& mode,
         auto src = p::open_evdev(e, error);
         if (!src) {
             if (mode == "evdev" || !want_gpio) {
-                std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+                std::fprintf(stderr, "noneuclid: %s.\n", error.c_str());
                 return false;
             }
             std::fprintf(stderr, "noneuclid: no keys (%s); the GPIO buttons are enough.\n", error.c_str());
