@@ -22,9 +22,9 @@ int64_t monotonic_ns() {
 
 int fail(const char* sentence, const char* detail = nullptr) {
     if (detail)
-        std::fprintf(stderr, "noneuclid: %s: %s\n", sentence, detail);
+        std::fprintf(stderr, "noneuclid: %s: %s.\n", sentence, detail);
     else
-        std::fprintf(stderr, "noneuclid: %s\n", sentence);
+        std::fprintf(stderr, "noneuclid: %s.\n", sentence);
     return 1;
 }
 

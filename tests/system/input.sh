@@ -14,6 +14,7 @@
 #   busy       a second program asking for held lines fails with the busy-line sentence
 #   no chip    a board naming a chip that is not there: the sentence lists what is
 #   no line    a line beyond the chip's 8: the sentence gives the range
+#   alloc      read() allocates nothing while lines change (input_alloc_probe, malloc wrapped)
 # Once (the evdev code is the same in every binary), through a uinput key device:
 #   evdev      a key held at start (a press first), press/release, an autorepeat (ignored), release; grabbed
 #   no keys    a board whose codes no device has: the sentence names the codes
@@ -123,6 +124,27 @@ release curvature_up" ]
         check "$bin busy: the first listener started" false
     fi
 
+    # read() allocates nothing: input_alloc_probe (malloc wrapped) reads lines 0-3 for 3 s
+    # while each is pressed and released, twice over for lines 0 and 1 (12 events)
+    probe=/t/input_alloc_probe-${bin#noneuclid-}
+    if [ -x "$probe" ]; then
+        "$probe" gpio noneuclid-sim 3 > "/out/$bin-alloc.txt" 2>&1 &
+        ppid=$!
+        if wait_for "/out/$bin-alloc.txt" '^ready$' "$ppid"; then
+            for l in 0 1 2 3 0 1; do
+                sim_pull "$l" pull-down; sleep 0.1
+                sim_pull "$l" pull-up; sleep 0.1
+            done
+        fi
+        wait "$ppid"
+        rc=$?
+        result=$(tail -n 1 "/out/$bin-alloc.txt")
+        check "$bin gpio read() allocates nothing ($result)" [ "$rc" = 0 ]
+        check "$bin gpio allocation probe saw the 12 events" [ "$result" = "events 12 allocations 0" ]
+    else
+        echo "INFO $bin: no allocation probe"
+    fi
+
     # no chip
     board_with 's/^chip = .*/chip = ["no-such-chip", "pinctrl-bcm2711"]/' /tmp/board-nochip.toml
     "$bin" buttons --board /tmp/board-nochip.toml --input gpio --timeout 2 > /dev/null 2> "/out/$bin-nochip.log"
@@ -171,6 +193,22 @@ if wait_for /tmp/inject.out '^ready$' "$inject"; then
 press thrust
 release thrust
 release left" ]
+    probe=/t/input_alloc_probe-${bin#noneuclid-}
+    if [ -x "$probe" ]; then
+        "$probe" evdev 2 > /out/evdev-alloc.txt 2>&1 &
+        ppid=$!
+        if wait_for /out/evdev-alloc.txt '^ready$' "$ppid"; then
+            for k in 103 105 103; do
+                echo "p $k" >&3; sleep 0.1
+                echo "r $k" >&3; sleep 0.1
+            done
+        fi
+        wait "$ppid"
+        rc=$?
+        result=$(tail -n 1 /out/evdev-alloc.txt)
+        check "evdev read() allocates nothing ($result)" [ "$rc" = 0 ]
+        check "evdev allocation probe saw the 6 events" [ "$result" = "events 6 allocations 0" ]
+    fi
     check "evdev describe: the device, grabbed" contains "$(cat /out/evdev.log)" "evdev: /dev/input/event" \
         "\"noneuclid-keys\"" ", grabbed"
 else
