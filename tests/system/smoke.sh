@@ -11,7 +11,7 @@ check "vfb framebuffer present" [ -n "$vfb" ]
 if [ -n "$bochs" ]; then
     info=$(probe fb "$bochs")
     echo "$bochs: $info"
-    check "bochs is fb0 (fbcon's)" [ "$bochs" = /dev/fb0 ]
+    check "bochs is fb0" [ "$bochs" = /dev/fb0 ]
     check "bochs 800x480" contains "$info" " xres=800 yres=480 "
     check "bochs XRGB8888" contains "$info" " bpp=32 " " red=16/8 green=8/8 blue=0/8 "
     fb_dump "$bochs" /out/bochs
