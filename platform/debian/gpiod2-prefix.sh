@@ -3,7 +3,8 @@
 # own libgpiod-dev is 1.6 (v1 API). bookworm-backports has 2.1.3; installing it system-wide
 # would replace the v1 -dev package, so this script never touches the system:
 #
-#   platform/debian/gpiod2-prefix.sh [DIR]      # default DIR: build/gpiod2 (ARCH=arm64 for another arch)
+#   platform/debian/gpiod2-prefix.sh [DIR]      # default DIR: build/gpiod2
+#   ARCH=arm64 platform/debian/gpiod2-prefix.sh  # another architecture: build/gpiod2-arm64
 #
 #  1. a private apt configuration (its own sources list, lists and cache under DIR/apt) runs
 #     `apt-get update` and `apt-get download` for libgpiod-dev and libgpiod3 from
@@ -19,8 +20,12 @@
 set -eu
 
 here=$(cd "$(dirname "$0")/../.." && pwd)
-dir=${1:-$here/build/gpiod2}
 arch=${ARCH:-$(dpkg --print-architecture)}
+if [ "$arch" = "$(dpkg --print-architecture)" ]; then
+    dir=${1:-$here/build/gpiod2}
+else
+    dir=${1:-$here/build/gpiod2-$arch}
+fi
 mirror=${MIRROR:-http://deb.debian.org/debian}
 suite=${SUITE:-bookworm-backports}
 triple=$(dpkg-architecture -a"$arch" -qDEB_HOST_MULTIARCH 2>/dev/null) || case $arch in

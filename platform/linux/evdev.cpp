@@ -96,7 +96,7 @@ public:
             }
             if (!has_keys(fd, name)) {
                 close(fd);
-                error = config.device + " (" + name + ") has none of the key codes " + codes +
+                error = config.device + (name.empty() ? "" : " (" + name + ")") + " has none of the key codes " + codes +
                         ": set key in the board file's [[button]] tables to codes it has (`evtest " + config.device +
                         "` lists them), or pick another device";
                 return false;

@@ -302,7 +302,7 @@ TEST(OpenEvdev, NotAKeyDevice) {
     c.device = "/dev/null";
     std::string error;
     EXPECT_EQ(p::open_evdev(c, error), nullptr);
-    EXPECT_TRUE(contains(error, "/dev/null () has none of the key codes 103, 105")) << error;
+    EXPECT_TRUE(contains(error, "/dev/null has none of the key codes 103, 105")) << error;
 }
 
 TEST(OpenEvdev, ScanNamesTheCodesLookedFor) {
