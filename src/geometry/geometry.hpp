@@ -23,6 +23,7 @@
 // reading of a small piece of that model, written without 1/sqrt|K| and without acos.
 #pragma once
 
+#include <bit>
 #include <cmath>
 
 #include "geometry/scalar.hpp"
@@ -365,6 +366,61 @@ ScreenPoint<T> to_screen(T rho, T theta, T cx, T cy, T scale) {
 // and sine): in fixed point 1/w near the gnomonic horizon, and x, y read straight off the
 // 3-vector in the orthographic view, were measured less accurate than the polar path
 // (tests/perf/test_fast_paths.cpp holds the others to the polar path's error).
+// The slerp's weights a_k = S_K((n - k) delta) / S_K(d), b_k = S_K(k delta) / S_K(d) for
+// delta = d / n, by the recurrence of design.md: with sigma_k = S_K(k delta) / delta,
+//   sigma_0 = 0, sigma_1 = Sf(K delta^2), sigma_{k+1} = 2 C_K(delta) sigma_k - sigma_{k-1},
+// a_k = sigma_{n-k} / sigma_n, b_k = sigma_k / sigma_n: no trigonometry, no table and no
+// division per point, and no 0/0 for short edges. Fixed point only, in 64-bit integers with
+// 30 fractional bits (fx::slerp_sigmas), one reciprocal per edge. prepare() is false where the
+// caller should use the direct form instead: floating point, fewer than 4 or more than 64 segments,
+// |K delta^2| > 2, or an edge near the sphere's antipode, where sigma_n is small and the
+// weights large.
+template <class T>
+class SlerpWeights {
+public:
+    // Floating point keeps the direct form: the recurrence in float lost accuracy near the
+    // gnomonic horizon and in the orthographic view (tests/perf/test_fast_paths.cpp), and
+    // double's libm Sf is not the cost it is in fixed point's 64-bit emulation on 32-bit ARM.
+    bool prepare(T, T, int) { return false; }
+    T a(int) const { return T(0); }
+    T b(int) const { return T(0); }
+};
+template <>
+class SlerpWeights<fixed> {
+public:
+    bool prepare(fixed K, fixed d, int n) {
+        // From 4 segments on: below, the direct form's two table lookups per point cost less
+        // than the recurrence's set-up per edge.
+        if (n < 4 || n > kMax) return false;
+        if (!fx::slerp_sigmas(K, d, n, sigma_)) return false;
+        const int64_t top = sigma_[n];
+        if (top < (int64_t{1} << 27)) return false;  // sigma_n < 1/8
+        for (int k = 1; k < n; ++k)
+            if (sigma_[k] >= 2 * top || sigma_[k] <= -2 * top) return false;
+        n_ = n;
+        // top 2^e in [2^31, 2^32): inv ~ 2^(62 + e) / top.
+        e_ = std::countl_zero(static_cast<uint64_t>(top)) - 32;
+        inv_ = fx::detail::recip_q62(static_cast<uint32_t>(e_ >= 0 ? top << e_ : top >> -e_));
+        return true;
+    }
+    fixed a(int k) const { return weight(sigma_[n_ - k]); }
+    fixed b(int k) const { return weight(sigma_[k]); }
+
+private:
+    // sigma / sigma_n in Q16.16: (sigma 2^e) (2^(62+e) / top) / 2^(62 + 2e - ...) -> x' inv >> 46.
+    fixed weight(int64_t sig) const {
+        const int64_t x = e_ >= 0 ? sig * (int64_t{1} << e_) : sig >> -e_;  // |x| < 2^33
+        const uint64_t m = static_cast<uint64_t>(x < 0 ? -x : x);
+        const uint64_t q = (m * inv_ + (uint64_t{1} << 45)) >> 46;
+        return fixed::from_raw(static_cast<int32_t>(x < 0 ? -static_cast<int64_t>(q) : static_cast<int64_t>(q)));
+    }
+    static constexpr int kMax = 64;
+    int64_t sigma_[kMax + 1];
+    uint64_t inv_ = 0;
+    int e_ = 0;
+    int n_ = 0;
+};
+
 template <class T>
 struct ProjectedPoint {
     bool visible = true;
@@ -418,17 +474,21 @@ void edge_projected(T K, Polar<T> p, Polar<T> q, const Vec3<T>& P, const Vec3<T>
         return;
     }
     polar(0, p);
-    if (n > 1 && n < 32768) {
+    auto point = [&](int k, T a, T b) {
+        const ProjectedPoint<T> pp =
+            project_vec(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}, proj);
+        out(k, pp.visible, pp.X, pp.Y);
+    };
+    SlerpWeights<T> w;
+    if (w.prepare(K, d, n)) {
+        for (int k = 1; k < n; ++k) point(k, w.a(k), w.b(k));
+    } else if (n > 1 && n < 32768) {
         Fractions<T> f(n);
         const auto by_sfd = divisor(sfd);
         for (int k = 1; k < n; ++k) {
             f.next();
             const T t = f.t(k), u = f.u(k);
-            const T a = by_sfd(u * Sf(K * (u * d) * (u * d)));
-            const T b = by_sfd(t * Sf(K * (t * d) * (t * d)));
-            const ProjectedPoint<T> pp =
-                project_vec(K, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}, proj);
-            out(k, pp.visible, pp.X, pp.Y);
+            point(k, by_sfd(u * Sf(K * (u * d) * (u * d))), by_sfd(t * Sf(K * (t * d) * (t * d))));
         }
     }
     polar(n, q);

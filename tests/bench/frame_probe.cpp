@@ -1,6 +1,6 @@
 // Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
 // (../shared/tools/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
-//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K]]
+//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION]]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
@@ -23,13 +23,15 @@ using namespace noneuclid;
 
 template <class T>
 int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads,
-        const char* K) {
+        const char* K, int tess) {
     world::Scene scene;
-    if (!world::builtin_scene(scene_name, {}, scene)) {
+    world::SceneParams params;
+    if (tess > 0) params.tessellation = tess;  // stress only
+    if (!world::builtin_scene(scene_name, params, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
-    if (K) scene.curvature = std::atof(K);
+    if (K && *K) scene.curvature = std::atof(K);
     world::World<T> wd(scene);
     render::DrawScratch<T> scratch;
     scratch.prepare(wd);
@@ -104,10 +106,11 @@ int main(int argc, char** argv) {
     const long n = std::atol(argv[6]);
     const int threads = argc > 7 ? std::atoi(argv[7]) : 1;
     const char* K = argc > 8 ? argv[8] : nullptr;
+    const int tess = argc > 9 ? std::atoi(argv[9]) : 0;
     const std::string e = argv[2];
-    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads, K);
-    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads, K);
-    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads, K);
+    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads, K, tess);
+    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads, K, tess);
+    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads, K, tess);
     std::fprintf(stderr, "frame_probe: engine must be fixed, double or float, not '%s'.\n", argv[2]);
     return 2;
 }
