@@ -31,3 +31,11 @@ add_executable(perf_tests perf/test_fast_paths.cpp perf/test_parallel.cpp)
 target_link_libraries(perf_tests PRIVATE GTest::gtest_main noneuclid_render noneuclid_warnings Threads::Threads)
 gtest_discover_tests(perf_tests DISCOVERY_TIMEOUT 120 PROPERTIES LABELS perf)
 target_link_libraries(no_alloc_tests PRIVATE Threads::Threads)
+# The threaded tests start threads. Under qemu-user (Debian 12's 7.2) a dynamically linked
+# program that starts a thread hangs (aarch64) or crashes (armhf) before the thread runs; the
+# same program linked statically runs. So the cross builds link these statically, as
+# insn_probe and frame_probe already are.
+if(CMAKE_CROSSCOMPILING)
+    target_link_options(perf_tests PRIVATE -static)
+    target_link_options(no_alloc_tests PRIVATE -static)
+endif()
