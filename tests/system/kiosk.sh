@@ -12,8 +12,8 @@
 #             (/out/<case>.raw + .info) go to the host, which renders and compares;
 #   busy      a second noneuclid asking for the lines the first one holds fails with the
 #             busy-line sentence; the first one, stopped by SIGTERM, restores the VT.
-# Once: `--frames 30` with no input stops after exactly 30 frames (stdin not a VT), and a
-# missing framebuffer (/dev/fb7) fails with its sentence.
+# Once: `--frames 30` with no input stops after exactly 30 frames (stdin not a VT), the same
+# on vfb reloaded at 24 bpp, and a missing framebuffer (/dev/fb7) fails with its sentence.
 #
 # fbcon is kept off every framebuffer (the kernel command line maps the consoles to fb7, which
 # does not exist: the VTs run on the dummy console), so that restoring KD_TEXT at exit does not
@@ -155,6 +155,22 @@ cat /out/frames30.log
 check "--frames 30: exit 0" [ "$rc" = 0 ]
 check "--frames 30: 30 frames" contains "$(cat /out/frames30.log)" "noneuclid: 30 frames in "
 fb_dump "$bochs" /out/frames30
+
+echo "== $first: 24 bpp: vfb reloaded at 800x480-24 (red at bit 0), --frames 30"
+if [ -n "$vfb" ] && rmmod vfb && insmod /lib/modules/vfb.ko vfb_enable=1 videomemorysize=2097152 \
+        mode_option=800x480M-24@60; then
+    vfb24=$(fb_by_name "Virtual FB") || vfb24=""
+    check "vfb at 24 bpp present" [ -n "$vfb24" ]
+    check "vfb at 24 bpp is 24 bpp" contains "$(probe fb "$vfb24")" " bpp=24 "
+    "$first" run --display "fbdev:$vfb24" --input none --board /t/board.toml --scene kiosk --frames 30 \
+        --no-hud --stats < /dev/null > /out/vfb24.log 2>&1
+    rc=$?
+    cat /out/vfb24.log
+    check "24 bpp --frames 30: exit 0" [ "$rc" = 0 ]
+    fb_dump "$vfb24" /out/vfb24
+else
+    check "vfb reloaded at 24 bpp" false
+fi
 
 echo "== $first: a missing framebuffer"
 "$first" run --display fbdev:/dev/fb7 --input none --board /t/board.toml --frames 10 < /dev/null > /out/fb7.log 2>&1
