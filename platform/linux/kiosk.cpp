@@ -32,7 +32,8 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
     so.hud = o.hud;
     so.scene_name = scene.name.c_str();
     so.attract = o.attract;
-    render::Session<W> session(scene, so, render::builtin_font(), recorder);
+    render::WorkerPool pool(o.threads);
+    render::Session<W> session(scene, so, render::builtin_font(), recorder, &pool);
 
     constexpr int kMaxFds = 32;
     pollfd fds[kMaxFds];

@@ -24,6 +24,7 @@ struct KioskOptions {
     std::string engine = "fixed";
     geo::Projection projection = geo::Projection::azimuthal_equidistant;
     world::AttractOptions attract;
+    int threads = 1;     // drawing threads (render::WorkerPool, started once); 1: none started
     std::string record;  // actions file of every world action as it took effect ("" none)
     bool stats = false;
 };

@@ -109,6 +109,7 @@ void print_help(std::FILE* out) {
                  "                    auto (default: the board's GPIO buttons and, if found, keys)\n"
                  "  --attract SECONDS fbdev only: attract mode after this long without a button\n"
                  "                    (default: the board's, 120); 0 turns it off\n"
+                 "  --threads N       fbdev only: draw on N threads (default: the board's, 1)\n"
                  "  --record FILE     fbdev only: write every action as it took effect, as an\n"
                  "                    actions file that render --actions replays exactly\n"
                  "  --scene, --curvature, --engine, --projection, --aa   as above (fbdev: the\n"
@@ -657,6 +658,7 @@ int run_command(int argc, char** argv, int i) {
     std::optional<std::string> scene_name, engine;
     std::optional<noneuclid::geo::Projection> projection;
     std::optional<double> fps, attract;
+    std::optional<int> threads;
     std::optional<bool> aa, hud;
     bool has_curvature = false, stats = false;
     double curvature = 0;
@@ -712,6 +714,8 @@ int run_command(int argc, char** argv, int i) {
             record = value();
         } else if (opt == "--attract") {
             attract = parse_number("--attract", value(), 0, 1e7);
+        } else if (opt == "--threads") {
+            threads = static_cast<int>(parse_count("--threads", value(), 1, 16));
         } else {
             usage_error("unknown option '" + opt + "' for run; see 'noneuclid --help'.");
         }
@@ -727,8 +731,8 @@ int run_command(int argc, char** argv, int i) {
     }
     const char* kind_name = kind == DisplayKind::x11 ? "x11" : (kind == DisplayKind::fbdev ? "fbdev" : "png");
     std::fprintf(stderr, "noneuclid: display %s, because %s.\n", kind_name, reason.c_str());
-    if (kind != DisplayKind::fbdev && (!record.empty() || !board_spec.empty() || attract || input_mode != "auto"))
-        usage_error("--board, --input, --attract and --record are for the framebuffer kiosk: add --display fbdev.");
+    if (kind != DisplayKind::fbdev && (!record.empty() || !board_spec.empty() || attract || threads || input_mode != "auto"))
+        usage_error("--board, --input, --attract, --threads and --record are for the framebuffer kiosk: add --display fbdev.");
     if (kind == DisplayKind::png) return demo_command(argc, argv, argc);
     if (kind == DisplayKind::fbdev) {
 #if NONEUCLID_HAVE_FBDEV
@@ -746,6 +750,7 @@ int run_command(int argc, char** argv, int i) {
         o.projection = projection ? *projection : parse_projection(board.projection.c_str());
         o.attract.idle_seconds = attract.value_or(board.idle_seconds);
         o.attract.sweep_seconds = board.sweep_seconds;
+        o.threads = threads.value_or(board.threads);
         o.record = record;
         o.stats = stats;
         std::vector<std::unique_ptr<noneuclid::platform::InputSource>> inputs;

@@ -13,6 +13,7 @@
 #include <iterator>
 
 #include "render/draw_world.hpp"
+#include "render/parallel.hpp"
 #include "render/hud.hpp"
 #include "world/attract.hpp"
 #include "world/controls.hpp"
@@ -54,9 +55,14 @@ class Session {
 public:
     using T = typename W::scalar;
 
-    Session(const world::Scene& scene, const SessionOptions& o, const Font& font, ActionRecorder* recorder = nullptr)
-        : world(scene), options(o), font_(font), recorder_(recorder), autopilot_(o.attract, scene.curvature_rate) {
+    // `pool` (optional, started once by the caller): draw each frame over its threads, the same
+    // pixels as one thread (draw_world's threaded overload).
+    Session(const world::Scene& scene, const SessionOptions& o, const Font& font, ActionRecorder* recorder = nullptr,
+            WorkerPool* pool = nullptr)
+        : world(scene), options(o), font_(font), recorder_(recorder), pool_(pool && pool->size() > 1 ? pool : nullptr),
+          autopilot_(o.attract, scene.curvature_rate) {
         scratch_.prepare(world);
+        if (pool_) parallel_.prepare(world, *pool_);
     }
 
     W world;
@@ -92,7 +98,8 @@ public:
     }
 
     void draw(const Canvas& canvas) {
-        draw_world(canvas, world, options.draw, scratch_);
+        if (pool_) draw_world(canvas, world, options.draw, parallel_, *pool_);
+        else draw_world(canvas, world, options.draw, scratch_);
         if (!options.hud) return;
         HudInfo info;
         info.K = static_cast<double>(world.K);
@@ -144,8 +151,10 @@ private:
 
     const Font& font_;
     ActionRecorder* recorder_;
+    WorkerPool* pool_;
     world::Autopilot autopilot_;
     DrawScratch<T> scratch_;
+    ParallelScratch<T> parallel_;
     bool user_held_[world::kControlCount] = {};
 };
 

@@ -37,7 +37,7 @@ void read_board(const toml::table& root, Board& b) {
     b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
-        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud"});
+        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "threads"});
         b.device = d.string("device", b.device);
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
         b.scene = d.string("scene", b.scene);
@@ -51,6 +51,7 @@ void read_board(const toml::table& root, Board& b) {
             throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + b.projection + "\""};
         b.antialias = d.boolean("antialias", b.antialias);
         b.hud = d.boolean("hud", b.hud);
+        b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));
     }
     if (const toml::table* t = section(root, "gpio")) {
         const Reader g(*t, "gpio: ");

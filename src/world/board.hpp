@@ -11,6 +11,7 @@
 //     projection = "equidistant"
 //     antialias = false
 //     hud = true
+//     threads = 1             # drawing threads (1: the main thread only)
 //     [gpio]
 //     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
 //     debounce_ms = 10
@@ -54,6 +55,7 @@ struct Board {
     std::string projection = "equidistant";
     bool antialias = false;
     bool hud = true;
+    int threads = 1;
     // [gpio]
     std::vector<std::string> chips;
     int debounce_ms = 10;

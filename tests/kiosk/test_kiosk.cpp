@@ -230,7 +230,7 @@ struct Scripted {
 // file; returns the recording's text and leaves the last frame in `pixels`.
 template <class W>
 std::string run_session(const world::Scene& scene, const std::vector<Scripted>& script, long frames, double idle,
-                        render::PixelFormat format, std::vector<uint8_t>& pixels) {
+                        render::PixelFormat format, std::vector<uint8_t>& pixels, int threads = 1) {
     const int w = 320, h = 200;
     pixels.assign(static_cast<std::size_t>(w * h * format.bytes_per_pixel()), 0);
     const render::Canvas canvas(pixels.data(), w, h, w * format.bytes_per_pixel(), format);
@@ -239,7 +239,8 @@ std::string run_session(const world::Scene& scene, const std::vector<Scripted>& 
     render::SessionOptions o;
     o.hud = false;
     o.attract = {idle, 6, 0.25};
-    render::Session<W> s(scene, o, render::builtin_font(), &rec);
+    render::WorkerPool pool(threads);
+    render::Session<W> s(scene, o, render::builtin_font(), &rec, &pool);
     for (long fr = 0; fr < frames; ++fr) {
         for (const Scripted& e : script)
             if (e.frame == fr) s.control({e.control, e.pressed});
@@ -255,7 +256,7 @@ std::string run_session(const world::Scene& scene, const std::vector<Scripted>& 
 }
 
 template <class W>
-void replay_matches(double idle) {
+void replay_matches(double idle, int threads = 1) {
     const world::Scene scene = kiosk_scene();
     const std::vector<Scripted> script = {
         {12, Control::thrust, true},          {40, Control::curvature_down, true}, {95, Control::curvature_down, false},
@@ -266,7 +267,7 @@ void replay_matches(double idle) {
     const long frames = 420;
     for (render::PixelFormat format : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888()}) {
         std::vector<uint8_t> live;
-        const std::string text = run_session<W>(scene, script, frames, idle, format, live);
+        const std::string text = run_session<W>(scene, script, frames, idle, format, live, threads);
         std::vector<world::ActionEvent> events;
         world::ActionError err;
         ASSERT_TRUE(world::parse_actions(text, "recording", events, err)) << err.to_string() << "\n" << text;
@@ -307,5 +308,10 @@ TEST(Session, RecordingReplaysPixelExactDouble) { replay_matches<world::World<do
 TEST(Session, RecordingReplaysPixelExactFloat) { replay_matches<world::World<float>>(0); }
 // With attract mode kicking in (after 3 s idle) the autopilot's presses are recorded too.
 TEST(Session, RecordingWithAttractModeReplaysPixelExact) { replay_matches<world::World<fx::fixed>>(3); }
+// The kiosk's --threads: drawn over a pool of 2 or 3, the same pixels as render's one thread.
+TEST(Session, DrawnOnThreadsReplaysPixelExact) {
+    replay_matches<world::World<fx::fixed>>(3, 2);
+    replay_matches<world::World<double>>(0, 3);
+}
 
 }  // namespace
