@@ -21,6 +21,7 @@
 
 #include "render/blit.hpp"
 #include "render/draw_world.hpp"
+#include "fastest.hpp"
 
 namespace {
 
@@ -97,22 +98,6 @@ void stage(benchmark::State& st, const std::string& which, int w, int h, render:
     }
 }
 
-class Summary : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        // The fastest of the repetitions (--benchmark_repetitions=N): on a shared machine the
-        // others' load only ever adds time.
-        for (const Run& r : runs) {
-            if (r.run_type != Run::RT_Iteration) continue;
-            const std::string name = r.run_name.function_name;
-            const double us = r.GetAdjustedCPUTime();
-            auto it = g_us.find(name);
-            if (it == g_us.end() || us < it->second) g_us[name] = us;
-        }
-    }
-};
-
 const char* const kStages[] = {"step", "backdrop", "backdrop_pixelwise", "geometry", "raster", "copy", "memcpy", "frame"};
 
 }  // namespace
@@ -138,7 +123,9 @@ int main(int argc, char** argv) {
                               : benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& s) { stage<double>(s, which, w, h, f); });
                 b->Unit(benchmark::kMicrosecond);
             }
-    Summary rep;
+    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        keep_fastest(g_us, name, r.GetAdjustedCPUTime());
+    });
     benchmark::RunSpecifiedBenchmarks(&rep);
     std::printf("\nkiosk frame by stage, us of CPU time (share of the frame)\n\n");
     std::printf("| display | engine | step | backdrop | geometry | raster | copy | sum | frame | memcpy | copy/memcpy | backdrop pixelwise |\n");

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "fastest.hpp"
 
 namespace {
 
@@ -113,24 +114,6 @@ const char* engine_name() {
     else return "double";
 }
 
-class Summary : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        // The fastest of the repetitions (--benchmark_repetitions=N): on a shared machine the
-        // others' load only ever adds time.
-        for (const Run& r : runs) {
-            if (r.run_type != Run::RT_Iteration) continue;
-            auto it = r.counters.find("ns_per_item");
-            if (it == r.counters.end()) continue;
-            const std::string name = r.run_name.function_name;
-            const double ns = it->second.value * 1e9;
-            auto old = g_ns.find(name);
-            if (old == g_ns.end() || ns < old->second) g_ns[name] = ns;
-        }
-    }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -148,7 +131,10 @@ int main(int argc, char** argv) {
         reg(float{});
         reg(double{});
     }
-    Summary rep;
+    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        auto it = r.counters.find("ns_per_item");
+        if (it != r.counters.end()) keep_fastest(g_ns, name, it->second.value * 1e9);
+    });
     benchmark::RunSpecifiedBenchmarks(&rep);
     std::printf("\nns per item (vertex or point); ratio > 1: fixed is faster\n\n");
     std::printf("| stage | scene | fixed ns | float ns | double ns | double/fixed | float/fixed |\n|---|---|---:|---:|---:|---:|---:|\n");

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "fastest.hpp"
 
 namespace {
 
@@ -54,27 +55,6 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
     st.counters["process_cpu_us"] = process_us / static_cast<double>(st.iterations());
 }
 
-class Summary : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        // The fastest of the repetitions (--benchmark_repetitions=N): on a shared machine the
-        // others' load only ever adds time.
-        for (const Run& r : runs) {
-            if (r.run_type != Run::RT_Iteration) continue;
-            const std::string name = r.run_name.function_name;
-            const double us = r.GetAdjustedRealTime();
-            auto it = g_us.find(name);
-            if (it == g_us.end() || us < it->second) {
-                g_us[name] = us;
-                g_cpu[name] = r.GetAdjustedCPUTime();
-                auto pc = r.counters.find("process_cpu_us");
-                g_proc[name] = pc == r.counters.end() ? 0.0 : pc->second.value;
-            }
-        }
-    }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -99,7 +79,12 @@ int main(int argc, char** argv) {
                                   : benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& s) { frame<double>(s, sc, w, h, f, t); });
                     b->Unit(benchmark::kMicrosecond)->UseRealTime();
                 }
-    Summary rep;
+    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        if (!keep_fastest(g_us, name, r.GetAdjustedRealTime())) return;
+        g_cpu[name] = r.GetAdjustedCPUTime();
+        auto pc = r.counters.find("process_cpu_us");
+        g_proc[name] = pc == r.counters.end() ? 0.0 : pc->second.value;
+    });
     benchmark::RunSpecifiedBenchmarks(&rep);
     std::printf("\nframe (step + draw_world), us wall clock; speedup = serial / threaded (fastest repetition)\n");
     std::printf("split: calling thread's CPU us / every thread's CPU us per frame with 2 threads; 2 free cores = serial / "

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "fastest.hpp"
 
 namespace {
 
@@ -55,22 +56,6 @@ std::string key(const char* e, const char* stage, Point p) {
     std::snprintf(b, sizeof b, "%s/%s/s%d_v%d_i%d", e, stage, p.s, p.v, p.i);
     return b;
 }
-
-class Summary : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        ConsoleReporter::ReportRuns(runs);
-        // The fastest of the repetitions (--benchmark_repetitions=N): on a shared machine the
-        // others' load only ever adds time.
-        for (const Run& r : runs) {
-            if (r.run_type != Run::RT_Iteration) continue;
-            const std::string name = r.run_name.function_name;
-            const double us = r.GetAdjustedCPUTime();
-            auto it = g_us.find(name);
-            if (it == g_us.end() || us < it->second) g_us[name] = us;
-        }
-    }
-};
 
 // Least squares for t = c0 + c1 x1 + c2 x2 (3x3 normal equations, Cramer's rule).
 void fit(const std::vector<double>& x1, const std::vector<double>& x2, const std::vector<double>& t, double c[3]) {
@@ -115,7 +100,9 @@ int main(int argc, char** argv) {
                               : benchmark::RegisterBenchmark(key(e, stage, p).c_str(), [=](benchmark::State& s) { run<double>(s, p, raster); });
                 b->Unit(benchmark::kMicrosecond);
             }
-    Summary rep;
+    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        keep_fastest(g_us, name, r.GetAdjustedCPUTime());
+    });
     benchmark::RunSpecifiedBenchmarks(&rep);
 
     std::printf("\nfit: us = c0 + c_pt * (s v i) + c_vx * (s v)   (ns per tessellated point, per vertex)\n\n");
