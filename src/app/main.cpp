@@ -647,8 +647,8 @@ int buttons_command(int argc, char** argv, int i) {
     return noneuclid::platform::print_input_events(*inputs.front(), events, timeout, stdout);
 #else
     (void)events, (void)timeout;
-    usage_error("this build has no kiosk input (it was built for " + std::string(board_spec.empty() ? "a" : "a") +
-                " system without Linux GPIO/evdev support): build it on Linux with libgpiod-dev installed.");
+    (void)board_spec;
+    usage_error("this build has no kiosk input (it was built without Linux GPIO and evdev support): build it on Linux with libgpiod-dev installed.");
 #endif
 }
 
