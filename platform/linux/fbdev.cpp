@@ -8,13 +8,13 @@
 #include <sys/ioctl.h>
 #include <sys/mman.h>
 #include <termios.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 
+#include "linux/input.hpp"  // monotonic_ns
 #include "render/blit.hpp"
 
 namespace noneuclid::platform {
@@ -140,16 +140,14 @@ void Fbdev::present() {
     }
     if (vsync_ok_) {
         uint32_t crtc = 0;
-        timespec a{}, b{};
-        clock_gettime(CLOCK_MONOTONIC, &a);
+        const int64_t asked = monotonic_ns();
         if (ioctl(fd_, FBIO_WAITFORVSYNC, &crtc) != 0) {
             vsync_ok_ = false;  // ENOTTY, EBUSY: pace by the clock
         } else {
-            clock_gettime(CLOCK_MONOTONIC, &b);
             // A driver that answers at once without waiting would let the loop run flat out:
             // three instant answers in a row and the clock paces instead.
-            const long waited_us = (b.tv_sec - a.tv_sec) * 1000000L + (b.tv_nsec - a.tv_nsec) / 1000;
-            instant_vsyncs_ = waited_us < 300 ? instant_vsyncs_ + 1 : 0;
+            const bool instant = monotonic_ns() - asked < 300000;
+            instant_vsyncs_ = instant ? instant_vsyncs_ + 1 : 0;
             if (instant_vsyncs_ >= 3) vsync_ok_ = false;
         }
     }

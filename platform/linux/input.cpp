@@ -12,13 +12,13 @@
 
 namespace noneuclid::platform {
 
-namespace {
-
 int64_t monotonic_ns() {
     timespec ts{};
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return static_cast<int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
 }
+
+namespace {
 
 int fail(const char* sentence, const char* detail = nullptr) {
     if (detail)

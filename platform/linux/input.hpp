@@ -77,4 +77,7 @@ int print_input_events(InputSource& src, long max_events, double timeout_seconds
 // Which libgpiod API this build uses ("1.6.3 (v1 API)", "2.1.3 (v2 API)") or "none".
 const char* gpiod_version();
 
+// CLOCK_MONOTONIC in nanoseconds: the clock read() and deadline_ns() speak, and the frame loop's.
+int64_t monotonic_ns();
+
 }  // namespace noneuclid::platform

@@ -3,7 +3,6 @@
 
 #include <poll.h>
 #include <sys/resource.h>
-#include <time.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -16,12 +15,6 @@
 
 namespace noneuclid::platform {
 namespace {
-
-int64_t now_ns() {
-    timespec t{};
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return static_cast<int64_t>(t.tv_sec) * 1000000000 + t.tv_nsec;
-}
 
 template <class W>
 int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vector<std::unique_ptr<InputSource>>& inputs,
@@ -39,7 +32,7 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
     pollfd fds[kMaxFds];
     world::InputEvent events[64];
     const int64_t period = static_cast<int64_t>(1e9 / o.fps + 0.5);
-    const int64_t start = now_ns();
+    const int64_t start = monotonic_ns();
     int64_t next = start, fps_since = start;
     long frames = 0, fps_frames = 0;
     int status = 0;
@@ -51,12 +44,12 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
         for (bool first = true;; first = false) {
             int n = 0;
             for (auto& in : inputs) n += in->fds(fds + n, kMaxFds - n);
-            const int64_t t = now_ns();
+            const int64_t t = monotonic_ns();
             int64_t wake = vsync_paced ? t : next;
             for (auto& in : inputs)
                 if (const int64_t d = in->deadline_ns(); d >= 0 && d < wake) wake = d;
             const int timeout_ms = wake <= t ? 0 : static_cast<int>((wake - t + 999999) / 1000000);
-            if (!first || timeout_ms > 0 || n > 0) {
+            if (!first || n > 0) {
                 if (poll(fds, static_cast<nfds_t>(n), first ? 0 : timeout_ms) < 0 && errno != EINTR) {
                     std::fprintf(stderr, "noneuclid: waiting for the buttons failed (%s): check the input devices and restart.\n",
                                  std::strerror(errno));
@@ -64,7 +57,7 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
                 }
             }
             if (ConsoleGuard::stop_requested) break;
-            const int64_t after = now_ns();
+            const int64_t after = monotonic_ns();
             for (auto& in : inputs) {
                 const int got = in->read(events, static_cast<int>(std::size(events)), after);
                 for (int i = 0; i < got; ++i) session.control(events[i]);
@@ -75,7 +68,7 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
         session.frame(fb.back());
         fb.present();
         ++frames, ++fps_frames;
-        const int64_t t = now_ns();
+        const int64_t t = monotonic_ns();
         if (t - fps_since >= 500000000) {
             session.fps = static_cast<double>(fps_frames) * 1e9 / static_cast<double>(t - fps_since);
             fps_since = t, fps_frames = 0;
@@ -90,7 +83,7 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
         getrusage(RUSAGE_SELF, &u);
         const double user = static_cast<double>(u.ru_utime.tv_sec) + static_cast<double>(u.ru_utime.tv_usec) * 1e-6;
         const double sys = static_cast<double>(u.ru_stime.tv_sec) + static_cast<double>(u.ru_stime.tv_usec) * 1e-6;
-        const double wall = static_cast<double>(now_ns() - start) * 1e-9;
+        const double wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
         std::fprintf(stderr, "noneuclid: %ld frames in %.2f s (%.1f fps), CPU %.2f s user + %.2f s system = %.1f%% of one core\n",
                      frames, wall, wall > 0 ? static_cast<double>(frames) / wall : 0.0, user, sys,
                      wall > 0 ? 100 * (user + sys) / wall : 0.0);
