@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "linux/event_queue.hpp"
 #include "linux/input.hpp"
 
 namespace noneuclid::platform {
@@ -160,7 +161,7 @@ public:
         for (auto& d : devices_) {
             while (d.fd >= 0) {
                 // Room for this batch plus a full resync after SYN_DROPPED.
-                const int budget = kQueue - size_ - static_cast<int>(codes_.size());
+                const int budget = queue_.space() - static_cast<int>(codes_.size());
                 if (budget <= 0) break;
                 const int want = std::min(budget, kBatch);
                 ssize_t got = ::read(d.fd, events_, sizeof(input_event) * static_cast<size_t>(want));
@@ -184,13 +185,7 @@ public:
                 if (n < want) break;
             }
         }
-        int n = 0;
-        while (n < max && size_ > 0) {
-            out[n++] = queue_[head_];
-            head_ = (head_ + 1) % kQueue;
-            --size_;
-        }
-        return n;
+        return queue_.pop(out, max);
     }
 
 private:
@@ -234,9 +229,7 @@ private:
     }
 
     void push(unsigned code, bool pressed) {
-        if (size_ == kQueue) return;  // cannot happen: read() keeps room for a resync
-        queue_[(head_ + size_) % kQueue] = world::InputEvent{static_cast<world::Control>(control_[code]), pressed};
-        ++size_;
+        queue_.push({static_cast<world::Control>(control_[code]), pressed});  // never full: read() keeps room for a resync
     }
 
     void set(Device& d, unsigned code, bool pressed) {
@@ -268,8 +261,7 @@ private:
     std::vector<Device> devices_;
     std::string describe_;
     input_event events_[kBatch];
-    world::InputEvent queue_[kQueue];
-    int head_ = 0, size_ = 0;
+    EventQueue<kQueue> queue_;
 };
 
 }  // namespace

@@ -188,13 +188,11 @@ void ButtonTracker::init(const GpioConfig& config, int64_t debounce_ns) {
     for (const auto& b : config.buttons) control_.push_back(b.control);
     reported_.assign(count_, false);
     until_.assign(count_, -1);
-    head_ = size_ = 0;
+    queue_.clear();
 }
 
 void ButtonTracker::push(int index, bool pressed) {
-    if (size_ == kQueue) return;  // cannot happen: backends read at most space() - count() edges
-    queue_[(head_ + size_) % kQueue] = world::InputEvent{control_[index], pressed};
-    ++size_;
+    queue_.push({control_[index], pressed});  // never full: backends read at most space() - count() edges
 }
 
 void ButtonTracker::change(int index, bool pressed, int64_t now_ns) {
@@ -215,16 +213,6 @@ void ButtonTracker::edge(int index, bool pressed, int64_t now_ns) {
         until_[index] = -1;
     }
     if (pressed != reported_[index]) change(index, pressed, now_ns);
-}
-
-int ButtonTracker::pop(world::InputEvent* out, int max) {
-    int n = 0;
-    while (n < max && size_ > 0) {
-        out[n++] = queue_[head_];
-        head_ = (head_ + 1) % kQueue;
-        --size_;
-    }
-    return n;
 }
 
 int64_t ButtonTracker::deadline() const {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "linux/event_queue.hpp"
 #include "linux/input.hpp"
 
 namespace noneuclid::platform::gpio_detail {
@@ -71,9 +72,9 @@ public:
         }
     }
     // Room left in the queue (read at most this many kernel events).
-    int space() const { return kQueue - size_; }
+    int space() const { return queue_.space(); }
     // Moves up to max queued events to out, oldest first.
-    int pop(world::InputEvent* out, int max);
+    int pop(world::InputEvent* out, int max) { return queue_.pop(out, max); }
     // The earliest open debounce window's end, or -1.
     int64_t deadline() const;
     int count() const { return count_; }
@@ -89,8 +90,7 @@ private:
     std::vector<world::Control> control_;
     std::vector<bool> reported_;
     std::vector<int64_t> until_;  // end of the debounce window, -1: none
-    world::InputEvent queue_[kQueue];
-    int head_ = 0, size_ = 0;
+    EventQueue<kQueue> queue_;
 };
 
 }  // namespace noneuclid::platform::gpio_detail
