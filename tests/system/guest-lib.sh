@@ -12,6 +12,8 @@
 #   check WHAT CONDITION... `check "fb0 is bochs" [ "$x" = y ]`: prints PASS/FAIL WHAT, counts
 #                           failures in FAILS (the guest script's exit status should be $FAILS)
 #   contains TEXT PART...   true if TEXT contains every PART
+#   wait_for FILE REGEX PID until FILE matches the extended REGEX (true), or PID exits or 20 s
+#                           pass (false)
 #
 # /out/ is copied back to the host; /t/ holds the files the host passed in.
 
@@ -37,6 +39,17 @@ contains() {
             *) return 1 ;;
         esac
     done
+}
+
+wait_for() {
+    _i=0
+    while [ "$_i" -lt 200 ]; do
+        grep -qE "$2" "$1" 2>/dev/null && return 0
+        kill -0 "$3" 2>/dev/null || return 1
+        sleep 0.1
+        _i=$((_i + 1))
+    done
+    return 1
 }
 
 sim_chip() {

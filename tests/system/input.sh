@@ -27,18 +27,6 @@ NBUTTONS=$(grep -c '^gpio = ' "$BOARD")
 check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 8
 echo "gpio-sim: $SIM_DEV"
 
-# wait_for FILE REGEX PID: until FILE matches REGEX (true), PID exits or 20 s pass (false).
-wait_for() {
-    _i=0
-    while [ "$_i" -lt 200 ]; do
-        grep -qE "$2" "$1" 2>/dev/null && return 0
-        kill -0 "$3" 2>/dev/null || return 1
-        sleep 0.1
-        _i=$((_i + 1))
-    done
-    return 1
-}
-
 # listen NAME BINARY ARGS...: `BINARY buttons ARGS` in the background (stdout /out/NAME.txt,
 # stderr /out/NAME.log), PID in LPID; true once it has opened its input (its start-up line).
 listen() {

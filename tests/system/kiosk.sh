@@ -37,18 +37,6 @@ check "vfb framebuffer present" [ -n "$vfb" ]
 check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 8
 check "fbcon is off the framebuffers (fbcon=map:7)" [ "$(cat /sys/class/vtconsole/vtcon1/name 2>/dev/null)" = "(M) dummy device" ]
 
-# wait_for FILE TEXT PID: until FILE contains TEXT (true), PID exits or 20 s pass (false).
-wait_for() {
-    _i=0
-    while [ "$_i" -lt 200 ]; do
-        grep -qF "$2" "$1" 2>/dev/null && return 0
-        kill -0 "$3" 2>/dev/null || return 1
-        sleep 0.1
-        _i=$((_i + 1))
-    done
-    return 1
-}
-
 # The last line of a log: the error sentence.
 last_line() { tail -n 1 "$1"; }
 
