@@ -7,7 +7,6 @@
 #include <X11/extensions/XShm.h>
 #include <X11/keysym.h>
 #include <sys/ipc.h>
-#include <sys/resource.h>
 #include <sys/shm.h>
 #include <time.h>
 
@@ -26,6 +25,7 @@
 #include "desktop/png_file.hpp"
 #endif
 #include "render/session.hpp"
+#include "run_stats.hpp"
 #include "world/controls.hpp"
 #include "world/world.hpp"
 
@@ -375,16 +375,7 @@ int run_loop(X11Window& x, const world::Scene& scene, const RunOptions& o) {
 
     int status = 0;
     if (!o.screenshot.empty()) status = x.screenshot(o.screenshot);
-    if (o.stats) {
-        rusage u{};
-        getrusage(RUSAGE_SELF, &u);
-        const double user = static_cast<double>(u.ru_utime.tv_sec) + static_cast<double>(u.ru_utime.tv_usec) * 1e-6;
-        const double sys = static_cast<double>(u.ru_stime.tv_sec) + static_cast<double>(u.ru_stime.tv_usec) * 1e-6;
-        const double wall = now_seconds() - start;
-        std::fprintf(stderr, "noneuclid: %ld frames in %.2f s (%.1f fps), CPU %.2f s user + %.2f s system = %.1f%% of one core, %s\n",
-                     frames, wall, wall > 0 ? static_cast<double>(frames) / wall : 0.0, user, sys,
-                     wall > 0 ? 100 * (user + sys) / wall : 0.0, x.using_shm ? "MIT-SHM" : "XPutImage");
-    }
+    if (o.stats) print_run_stats(frames, now_seconds() - start, x.using_shm ? "MIT-SHM" : "XPutImage");
     return status;
 }
 

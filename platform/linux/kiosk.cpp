@@ -2,7 +2,6 @@
 #include "linux/kiosk.hpp"
 
 #include <poll.h>
-#include <sys/resource.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -10,6 +9,7 @@
 #include <iterator>
 
 #include "linux/fbdev.hpp"
+#include "run_stats.hpp"
 #include "render/session.hpp"
 #include "world/world.hpp"
 
@@ -35,7 +35,6 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
     const int64_t start = monotonic_ns();
     int64_t next = start, fps_since = start;
     long frames = 0, fps_frames = 0;
-    int status = 0;
 
     while (!ConsoleGuard::stop_requested && !session.quit && (o.frames == 0 || frames < o.frames)) {
         const bool vsync_paced = fb.vsync() && o.fps >= 55;  // present() waits for the refresh
@@ -78,17 +77,8 @@ int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vecto
     }
     if (ConsoleGuard::stop_requested)
         std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames.\n", ConsoleGuard::stop_signal(), frames);
-    if (o.stats) {
-        rusage u{};
-        getrusage(RUSAGE_SELF, &u);
-        const double user = static_cast<double>(u.ru_utime.tv_sec) + static_cast<double>(u.ru_utime.tv_usec) * 1e-6;
-        const double sys = static_cast<double>(u.ru_stime.tv_sec) + static_cast<double>(u.ru_stime.tv_usec) * 1e-6;
-        const double wall = static_cast<double>(monotonic_ns() - start) * 1e-9;
-        std::fprintf(stderr, "noneuclid: %ld frames in %.2f s (%.1f fps), CPU %.2f s user + %.2f s system = %.1f%% of one core\n",
-                     frames, wall, wall > 0 ? static_cast<double>(frames) / wall : 0.0, user, sys,
-                     wall > 0 ? 100 * (user + sys) / wall : 0.0);
-    }
-    return status;
+    if (o.stats) print_run_stats(frames, static_cast<double>(monotonic_ns() - start) * 1e-9);
+    return 0;
 }
 
 }  // namespace
