@@ -127,7 +127,7 @@ class Divisor {
 public:
     explicit Divisor(int32_t d_raw) noexcept
         : neg_(d_raw < 0), d_(d_raw < 0 ? 0u - static_cast<uint32_t>(d_raw) : static_cast<uint32_t>(d_raw)) {
-        if (d_ == 0) return;
+        if (d_ == 0 || Native) return;  // the divide instruction needs no reciprocal
         sh_ = std::countl_zero(d_);
         r_ = recip_q62(d_ << sh_);  // ~ 2^(62 + sh) / d
     }
@@ -508,13 +508,15 @@ inline fixed ASf(fixed u) noexcept {
 
 // ATf(u) = atan(sqrt u)/sqrt u (u > 0), atanh(sqrt -u)/sqrt -u (-1 < u < 0), 1 at 0, so that
 // AT_K(t) = t ATf(K t^2) inverts the tangent T_K(x) = S_K(x)/C_K(x) for every K. The table
-// covers [-1/2, 1]; beyond it atan2 (u > 1) or two logarithms (u < -1/2). ATf(u <= -1) is
+// covers [-1/2, 1] and a finer one [-15/16, -1/2]; beyond them atan2 (u > 1) or two logarithms
+// (u < -15/16). ATf(u <= -1) is
 // +infinity: it saturates to max().
 inline fixed ATf(fixed u) noexcept {
     using namespace tables;
     const int32_t r = u.raw();
     if (r >= -(1 << 15) && r <= 65536)
         return detail::lerp_table<kATfStepBits, 30>(atf_q30, r, -(1 << 15));
+    if (r >= kATfLowRaw && r < 0) return detail::lerp_table<kATfLowStepBits, 29>(atf_low_q29, r, kATfLowRaw);
     if (r <= -65536) return fixed::max();
     if (r > 0) {  // atan(s)/s, s = sqrt(u) in Q16 (s > 1): angle of (s, 1) in Q32 radians
         const fixed s = sqrt(u);
@@ -561,6 +563,8 @@ inline fixed mul_ATf(fixed x, fixed u) noexcept {
     const int32_t r = u.raw();
     if (r >= -(1 << 15) && r <= 65536)
         return detail::times_table_value<30>(x, detail::lerp_table_raw<kATfStepBits>(atf_q30, r, -(1 << 15)));
+    if (r >= kATfLowRaw && r < 0)
+        return detail::times_table_value<29>(x, detail::lerp_table_raw<kATfLowStepBits>(atf_low_q29, r, kATfLowRaw));
     return x * ATf(u);
 }
 

@@ -75,6 +75,11 @@ constexpr std::array<int32_t, (3 << (kATfStepBits - 1)) + 2> atf_q30 =
         return cx::ATf(-0.5 + static_cast<double>(i) / (1 << kATfStepBits)) * q30;
     });
 
+constexpr std::array<int32_t, (7 << (kATfLowStepBits - 4)) + 2> atf_low_q29 =
+    build<int32_t, (7 << (kATfLowStepBits - 4)) + 2>([](int i) {
+        return cx::ATf(-15.0 / 16 + static_cast<double>(i) / (1 << kATfLowStepBits)) * (q30 / 2);
+    });
+
 }  // namespace noneuclid::fx::tables
 
 namespace noneuclid::fx::detail {

@@ -62,12 +62,20 @@ extern const std::array<int32_t, ((kASfLow << kASfStepBits) + (1 << (kASfStepBit
 // Q2.30. Error <= 8.3e-7.
 inline constexpr int kATfStepBits = 9;
 extern const std::array<int32_t, (3 << (kATfStepBits - 1)) + 2> atf_q30;
+// ATf below that, where atanh's logarithm steepens toward u = -1: u = -15/16 + i/4096,
+// i in [0, 1792] (+1 pad) = [-15/16, -1/2], Q3.29 (ATf reaches 2.08). Error <= 9.3e-7. At K = -1 this is
+// r <= 2 atanh(sqrt(15/16)) = 4.13 (the limit circles the scenes use are within 3.2), so the
+// equidistant projection's points and every arc_K there stay in the tables, not in two
+// logarithms and a division.
+inline constexpr int kATfLowStepBits = 12;
+inline constexpr int32_t kATfLowRaw = -(15 << 12);  // -15/16 in Q16.16
+extern const std::array<int32_t, (7 << (kATfLowStepBits - 4)) + 2> atf_low_q29;
 
 // Total bytes of all tables.
 inline constexpr std::size_t table_bytes =
     sizeof(sin_q30) + sizeof(atan_units) + sizeof(asin_q30) + sizeof(sqrt_q31) +
     sizeof(exp2_q30) + sizeof(recip_q31) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30) +
-    sizeof(atf_q30);
+    sizeof(atf_q30) + sizeof(atf_low_q29);
 static_assert(table_bytes <= 64 * 1024, "lookup tables must fit in 64 KiB");
 
 }  // namespace noneuclid::fx::tables

@@ -43,6 +43,10 @@ TEST(Tables, EntriesMatchStdToHalfAStep) {
         const double u = -0.5 + i / 512, s = std::sqrt(std::fabs(u));
         return u == 0 ? 1.0 : (u > 0 ? std::atan(s) / s : std::atanh(s) / s);
     }, "ATf");
+    expect_table(t::atf_low_q29, 0x1p29, 1793, [](double i) {
+        const double u = -15.0 / 16 + i / 4096, s = std::sqrt(-u);
+        return std::atanh(s) / s;
+    }, "ATf low");
 }
 
 TEST(Tables, FitTheMemoryBudget) {
