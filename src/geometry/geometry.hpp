@@ -285,6 +285,38 @@ Pose<T> move(T K, Pose<T> pose, T d) {
     return {w.end, w.heading, wrap_pi(pose.facing + w.turn)};
 }
 
+// ---- a rigid body in the 3-vector model --------------------------------------------------
+
+// The rigid motion that takes a body's local frame (its centre at O, its facing along +x) to
+// where the body is: a point given by its local 3-vector L = to_vec(K, (rho, phi)) lands at
+// motion * L. It is walk_end's triangle as a matrix, built once per body and frame: with
+// alpha = facing - theta_c (the facing against the centre's outward radial),
+//   (w, x', y') = (C L_w - K S (cos alpha L_x - sin alpha L_y),
+//                  S L_w + C (cos alpha L_x - sin alpha L_y),  sin alpha L_x + cos alpha L_y)
+// for S = S_K(r_c), C = C_K(r_c), then (x', y') turned by theta_c. So a vertex costs nine
+// products, not walk_end's sines, cosines, curvature functions, square root and atan2.
+template <class T>
+struct Motion {
+    T m[3][3];  // rows w, x, y; columns L_w, L_x, L_y
+    Vec3<T> operator()(const Vec3<T>& L) const {
+        return {dot3(m[0][0], L.w, m[0][1], L.x, m[0][2], L.y), dot3(m[1][0], L.w, m[1][1], L.x, m[1][2], L.y),
+                dot3(m[2][0], L.w, m[2][1], L.x, m[2][2], L.y)};
+    }
+};
+template <class T>
+Motion<T> body_motion(T K, Polar<T> centre, T facing) {
+    using std::cos, std::sin;
+    const T alpha = facing - centre.theta;
+    const T ca = cos(alpha), sa = sin(alpha), ct = cos(centre.theta), st = sin(centre.theta);
+    const T S = S_K(K, centre.r), C = C_K(K, centre.r);
+    const T ks = K * S, cca = C * ca, csa = C * sa;
+    Motion<T> M;
+    M.m[0][0] = C, M.m[0][1] = -(ks * ca), M.m[0][2] = ks * sa;
+    M.m[1][0] = ct * S, M.m[1][1] = dot2(ct, cca, -st, sa), M.m[1][2] = dot2(-ct, csa, -st, ca);
+    M.m[2][0] = st * S, M.m[2][1] = dot2(st, cca, ct, sa), M.m[2][2] = dot2(-st, csa, ct, ca);
+    return M;
+}
+
 // ---- projections ---------------------------------------------------------------------------
 
 // Screen radius rho = f_K(r) of a point at distance r from O, continuous in K; at K = 0 every
@@ -421,6 +453,32 @@ private:
     int n_ = 0;
 };
 
+// The weights (a_k, b_k), k = 1 .. n - 1, of the generalised slerp along an edge of length d
+// at level n (edge_projected's, in the same arithmetic: the recurrence in fixed point where
+// SlerpWeights takes it, else the direct form), written to ab[2 (k - 1)], ab[2 (k - 1) + 1].
+// They depend on K, d and n alone, so a rigid body keeps them until K changes. False, and
+// nothing written, for an edge whose ends are antipodal on the sphere (S_K(d) ~ 0), where the
+// caller walks the edge instead (edge_projected does).
+template <class T>
+bool slerp_weights(T K, T d, int n, T* ab) {
+    const T sfd = Sf(K * d * d);
+    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) return false;
+    SlerpWeights<T> w;
+    if (w.prepare(K, d, n)) {
+        for (int k = 1; k < n; ++k) ab[2 * (k - 1)] = w.a(k), ab[2 * (k - 1) + 1] = w.b(k);
+    } else if (n > 1 && n < 32768) {
+        Fractions<T> f(n);
+        const auto by_sfd = divisor(sfd);
+        for (int k = 1; k < n; ++k) {
+            f.next();
+            const T t = f.t(k), u = f.u(k);
+            ab[2 * (k - 1)] = by_sfd(u * Sf(K * (u * d) * (u * d)));
+            ab[2 * (k - 1) + 1] = by_sfd(t * Sf(K * (t * d) * (t * d)));
+        }
+    }
+    return true;
+}
+
 template <class T>
 struct ProjectedPoint {
     bool visible = true;
@@ -439,6 +497,10 @@ ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
     const T big = num<T>(100);
     if (v.w < T(0) || v.x > big || v.x < -big || v.y > big || v.y < -big)
         return project_polar(K, to_polar(K, v), proj);
+    if constexpr (std::is_same_v<T, fixed>) {
+        T X, Y;
+        if (proj == Projection::azimuthal_equidistant && fx::equidistant_xy(K, v.w, v.x, v.y, X, Y)) return {true, X, Y};
+    }
     T f;
     switch (proj) {
         case Projection::azimuthal_equidistant: {
@@ -492,6 +554,22 @@ void edge_projected(T K, Polar<T> p, Polar<T> q, const Vec3<T>& P, const Vec3<T>
         }
     }
     polar(n, q);
+}
+// The same points from the end points' 3-vectors and the edge's slerp_weights (ab, n - 1
+// pairs), the end points projected from their 3-vectors as well: no polar coordinates at all.
+template <class T, class Out>
+void edge_projected(T K, const Vec3<T>& P, const Vec3<T>& Q, const T* ab, int n, Projection proj, bool with_start,
+                    Out&& out) {
+    auto point = [&](int k, const Vec3<T>& v) {
+        const ProjectedPoint<T> pp = project_vec(K, v, proj);
+        out(k, pp.visible, pp.X, pp.Y);
+    };
+    if (with_start) point(0, P);
+    for (int k = 1; k < n; ++k) {
+        const T a = ab[2 * (k - 1)], b = ab[2 * (k - 1) + 1];
+        point(k, Vec3<T>{dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)});
+    }
+    point(n, Q);
 }
 template <class T, class Out>
 void edge_projected(T K, Polar<T> p, Polar<T> q, int n, Projection proj, Out&& out) {

@@ -88,6 +88,10 @@ inline float mul_carry(float a, float b, int64_t&) { return a * b; }
 inline double dot2(double a, double b, double c, double d) { return a * b + c * d; }
 inline float dot2(float a, float b, float c, float d) { return a * b + c * d; }
 
+// a b + c d + e f; fx::dot3 rounds once.
+inline double dot3(double a, double b, double c, double d, double e, double f) { return a * b + c * d + e * f; }
+inline float dot3(float a, float b, float c, float d, float e, float f) { return a * b + c * d + e * f; }
+
 // An angle brought into [-pi, pi].
 inline double wrap_pi(double a) { return std::remainder(a, 2 * pi_v<double>); }
 inline float wrap_pi(float a) { return std::remainder(a, 2 * pi_v<float>); }

@@ -154,12 +154,13 @@ void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOption
     draw_backdrop_rows(c, m, R, o, 0, c.height());
 }
 
-// One body's geometry: its vertices (into verts, room for b.local.size()), its edges
-// tessellated at the body's level, projected and mapped to the screen, into out (room for
-// body_point_capacity(b)) as one polyline with kBreak where a point cannot be shown. Returns
-// the number of entries written. Reads the world, writes only verts and out: bodies can be
-// done on different threads at once.
-// vecs (room for b.local.size()) receives the vertices' 3-vectors.
+// One body's geometry: its vertices, its edges tessellated at the body's level, projected and
+// mapped to the screen, into out (room for body_point_capacity(b)) as one polyline with kBreak
+// where a point cannot be shown. Returns the number of entries written. Writes only verts,
+// vecs, out and the body's own shape cache (World::shape, refreshed if K changed): bodies can
+// be done on different threads at once. vecs (room for b.local.size()) receives the vertices'
+// 3-vectors; verts (room for b.local.size()) their polar positions with the paper's engine,
+// and is scratch otherwise.
 template <class W>
 std::size_t body_screen_points(const W& world, const world::Body<typename W::scalar>& b,
                                const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
@@ -167,7 +168,6 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
     using T = typename W::scalar;
     const std::size_t n = b.local.size();
     if (n == 0) return 0;
-    world.vertices(b, verts);
     const int level = b.desc->tessellation;
     const std::size_t edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
     std::size_t count = 0;
@@ -184,26 +184,42 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         const geo::ProjectedPoint<T> pp = geo::project_polar(world.K, p, o.projection);
         add_xy(pp.visible, pp.X, pp.Y);
     };
+    if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>) {
+        // In the 3-vector model throughout (geometry.hpp): the vertices are the body's motion
+        // applied to its local 3-vectors, each edge's points its cached slerp weights applied to
+        // its ends, and every point goes straight to the projection plane. An edge's first point
+        // is the previous edge's last.
+        const world::ShapeCache<T>& sh = world.shape(b);
+        const geo::Motion<T> motion = geo::body_motion(world.K, b.centre, b.facing);
+        for (std::size_t i = 0; i < n; ++i) vecs[i] = motion(sh.local[i]);
+        auto emit = [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); };
+        if (edges == 0) {
+            const geo::ProjectedPoint<T> pp = geo::project_vec(world.K, vecs[0], o.projection);
+            add_xy(pp.visible, pp.X, pp.Y);
+            return count;
+        }
+        const std::size_t per_edge = static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
+        for (std::size_t e = 0; e < edges; ++e) {
+            const std::size_t f = (e + 1) % n;
+            if (!sh.antipodal[e]) {
+                geo::edge_projected(world.K, vecs[e], vecs[f], sh.weights.data() + e * per_edge, level, o.projection, e == 0, emit);
+            } else {  // antipodal ends: walked from the polar end points (rare: K > 0, an edge of length pi / sqrt K)
+                verts[0] = geo::to_polar(world.K, vecs[e]), verts[1] = geo::to_polar(world.K, vecs[f]);  // n >= 2
+                geo::edge_projected(world.K, verts[0], verts[1], vecs[e], vecs[f], level, o.projection, e == 0, emit);
+            }
+        }
+        return count;
+    }
+    world.vertices(b, verts);
     if (edges == 0) {
         add(verts[0]);
         return count;
     }
-    if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>)
-        for (std::size_t i = 0; i < n; ++i) vecs[i] = geo::to_vec(world.K, verts[i]);
-    for (std::size_t e = 0; e < edges; ++e) {
-        if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>) {
-            // Straight from the 3-vector to the projection plane (geometry.hpp, edge_projected);
-            // an edge's first point is the previous edge's last.
-            const std::size_t f = (e + 1) % n;
-            geo::edge_projected(world.K, verts[e], verts[f], vecs[e], vecs[f], level, o.projection, e == 0,
-                                [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); });
-        } else {
-            W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
-                if (k == 0 && e > 0) return;
-                add(p);
-            });
-        }
-    }
+    for (std::size_t e = 0; e < edges; ++e)  // the paper's engine: its formulas, in polar
+        W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
+            if (k == 0 && e > 0) return;
+            add(p);
+        });
     return count;
 }
 

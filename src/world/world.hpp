@@ -51,6 +51,19 @@ inline bool parse_action(const std::string& s, Action& out) {
     return false;
 }
 
+// What drawing a rigid body needs that changes only with K (World::shape): each vertex as its
+// local 3-vector about the centre, each edge's slerp weights (a rigid motion keeps the edge's
+// length, so they come from the local polar vertices). Sized when the body is made; refreshed
+// in place, without allocating, when K differs from the K they were made at.
+template <class T>
+struct ShapeCache {
+    T K{};
+    bool valid = false;
+    std::vector<geo::Vec3<T>> local;  // per vertex
+    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k)
+    std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
+};
+
 template <class T>
 struct Body {
     Polar<T> centre;
@@ -58,6 +71,9 @@ struct Body {
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
     int64_t step_carry = 0;       // what speed * dt rounding left over (fixed point)
     const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
+    // World::shape's cache. Mutable: a const world refreshes it when drawn after K changed. One
+    // body is drawn by one thread at a time (draw_world's threaded overload hands out bodies).
+    mutable ShapeCache<T> shape;
 };
 
 // The engine's geometry: the exact forms, or the paper's (double only).
@@ -190,6 +206,22 @@ public:
         for (std::size_t i = 0; i < b.local.size(); ++i) out[i] = engine::vertex(K, b.centre, b.facing, b.local[i]);
     }
 
+    // The body's shape at the current K (ShapeCache), refreshed first if K changed since.
+    const ShapeCache<T>& shape(const Body<T>& b) const {
+        ShapeCache<T>& c = b.shape;
+        if (c.valid && c.K == K) return c;
+        const std::size_t n = b.local.size(), edges = c.antipodal.size();
+        const int level = b.desc->tessellation;
+        for (std::size_t i = 0; i < n; ++i) c.local[i] = geo::to_vec(K, b.local[i]);
+        for (std::size_t e = 0; e < edges; ++e) {
+            const T d = geo::distance(K, b.local[e], b.local[(e + 1) % n]);
+            T* ab = c.weights.data() + e * static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
+            c.antipodal[e] = !geo::slerp_weights(K, d, level, ab);
+        }
+        c.K = K, c.valid = true;
+        return c;
+    }
+
 private:
     static constexpr double kDegree = 3.14159265358979323846 / 180;
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
@@ -203,6 +235,10 @@ private:
         b.accel_dir = geo::wrap_pi(T(sb.accel_direction_deg * kDegree));
         b.spin = T(sb.spin_deg * kDegree);
         for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
+        const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (sb.closed ? n : n - 1);
+        b.shape.local.resize(n);
+        b.shape.antipodal.resize(edges);
+        b.shape.weights.resize(edges * static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0));
         return b;
     }
     void copy_from(const World& o) {
