@@ -652,7 +652,7 @@ inline bool slerp_sigmas(fixed K, fixed d, int n, int64_t* sigma) noexcept {
 // moved by a quarter of a pixel.) All products are 32 x 32 -> 64 bits. False, with nothing
 // written, where K |t|^2 falls outside ATf's tables (beyond r = 4.1 at K = -1): the caller takes
 // the general path.
-inline bool equidistant_xy(fixed K, fixed w, fixed x, fixed y, fixed& X, fixed& Y) noexcept {
+[[gnu::always_inline]] inline bool equidistant_xy(fixed K, fixed w, fixed x, fixed y, fixed& X, fixed& Y) noexcept {
     const uint32_t d = static_cast<uint32_t>(int64_t{w.raw()} + 65536);  // 1 + w in Q16, >= 2^16
     const int sh = std::countl_zero(d);                                   // <= 15
     const int32_t g = static_cast<int32_t>(detail::recip_q62(d << sh) >> (16 - sh));  // 2^46 / d: g in Q29

@@ -492,15 +492,11 @@ ProjectedPoint<T> project_polar(T K, Polar<T> p, Projection proj) {
     return {true, pr.rho * cos(p.theta), pr.rho * sin(p.theta)};
 }
 template <class T>
-ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
+ProjectedPoint<T> project_vec_general(T K, Vec3<T> v, Projection proj) {
     using std::sqrt;
     const T big = num<T>(100);
     if (v.w < T(0) || v.x > big || v.x < -big || v.y > big || v.y < -big)
         return project_polar(K, to_polar(K, v), proj);
-    if constexpr (std::is_same_v<T, fixed>) {
-        T X, Y;
-        if (proj == Projection::azimuthal_equidistant && fx::equidistant_xy(K, v.w, v.x, v.y, X, Y)) return {true, X, Y};
-    }
     T f;
     switch (proj) {
         case Projection::azimuthal_equidistant: {
@@ -514,6 +510,19 @@ ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
         default: return project_polar(K, to_polar(K, v), proj);
     }
     return {true, v.x * f, v.y * f};
+}
+// (Fixed point's equidistant view, the paper's and the kiosk's, takes fx::equidistant_xy inline:
+// the common case is a few dozen integer instructions, worth no call.)
+template <class T>
+[[gnu::always_inline]] inline ProjectedPoint<T> project_vec(T K, Vec3<T> v, Projection proj) {
+    if constexpr (std::is_same_v<T, fixed>) {
+        const int32_t big = 100 << 16;
+        T X, Y;
+        if (proj == Projection::azimuthal_equidistant && v.w.raw() >= 0 && v.x.raw() <= big && v.x.raw() >= -big &&
+            v.y.raw() <= big && v.y.raw() >= -big && fx::equidistant_xy(K, v.w, v.x, v.y, X, Y))
+            return {true, X, Y};
+    }
+    return project_vec_general(K, v, proj);
 }
 // With the end points' 3-vectors P = to_vec(K, p), Q = to_vec(K, q) given (a polygon's vertices
 // are each an end of two edges: the caller computes them once), and the start point left out

@@ -5,7 +5,8 @@
 #   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
 #   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)
 #   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
-#   K=-0.6 to set the curvature (the kiosk starts at K = 0); FRAMES=N (default 10)
+#   K=-0.6 to set the curvature (the kiosk starts at K = 0), K=sweep to change it every frame as
+#   attract mode does (the frame stage then rebuilds every body's shape cache); FRAMES=N (default 10)
 #
 # Per frame = (count with N frames - count with 0 frames) / N; both runs build the world and
 # draw one warm-up frame (tests/bench/frame_probe.cpp). frame = world step + draw_world +

@@ -2,8 +2,10 @@
 // in one run (Google Benchmark), per vertex and per tessellated point:
 //     build/p8-release/bench_geometry
 //
-//   vertices/<engine>/<scene>  every body's vertices from its centre and facing (walk): ns per
-//                              vertex (counter ns_per_item)
+//   vertices/<engine>/<scene>  every body's vertices from its centre and facing, in polar
+//                              (walk_end, what `dump` exports): ns per vertex (counter ns_per_item)
+//   vectors/<engine>/<scene>   the same vertices as the draw makes them: one matrix per body
+//                              (geo::body_motion) applied to the cached local 3-vectors
 //   points/<engine>/<scene>    every edge tessellated at its body's level (edge_points): ns per
 //                              point produced, polar (r, theta)
 //   screen/<engine>/<scene>    the draw's whole geometry: vertices, edge points, projection and
@@ -58,6 +60,25 @@ void vertices(benchmark::State& st, const char* scene) {
         benchmark::ClobberMemory();
     }
     record<T>(st, "vertices", n);
+}
+
+// The draw's vertices: the body's motion, applied to its cached local 3-vectors (World::shape).
+template <class T>
+void vectors(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    std::vector<geo::Vec3<T>> buf(4096);
+    double n = 0;
+    for (const auto& b : w.bodies) n += static_cast<double>(b.local.size());
+    for (auto _ : st) {
+        for (const auto& b : w.bodies) {
+            const world::ShapeCache<T>& sh = w.shape(b);
+            const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
+            for (std::size_t i = 0; i < b.local.size(); ++i) buf[i] = m(sh.local[i]);
+            benchmark::DoNotOptimize(buf.data());
+        }
+        benchmark::ClobberMemory();
+    }
+    record<T>(st, "vectors", n);
 }
 
 template <class T>
@@ -124,6 +145,7 @@ int main(int argc, char** argv) {
             using T = decltype(tag);
             const std::string e = engine_name<T>();
             benchmark::RegisterBenchmark(("vertices/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { vertices<T>(s, sc); });
+            benchmark::RegisterBenchmark(("vectors/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { vectors<T>(s, sc); });
             benchmark::RegisterBenchmark(("points/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { points<T>(s, sc); });
             benchmark::RegisterBenchmark(("screen/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { screen<T>(s, sc); });
         };
@@ -138,7 +160,7 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks(&rep);
     std::printf("\nns per item (vertex or point); ratio > 1: fixed is faster\n\n");
     std::printf("| stage | scene | fixed ns | float ns | double ns | double/fixed | float/fixed |\n|---|---|---:|---:|---:|---:|---:|\n");
-    for (const char* stage : {"vertices", "points", "screen"})
+    for (const char* stage : {"vertices", "vectors", "points", "screen"})
         for (const char* sc : scenes) {
             auto get = [&](const char* e) {
                 auto it = g_ns.find(std::string(stage) + "/" + e + "/" + sc);

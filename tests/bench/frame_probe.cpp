@@ -5,7 +5,9 @@
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
 // ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888; K sets the
-// curvature (the kiosk starts flat, where the double engine's series are at their cheapest).
+// curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
+// K = sweep changes it every frame as attract mode does, so every body's shape cache
+// (World::shape) is rebuilt every frame: the worst case of the frame stage.
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
 #include <cstdio>
@@ -31,7 +33,12 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
-    if (K && *K) scene.curvature = std::atof(K);
+    if (K && std::string(K) == "sweep") {  // attract mode's sweep: K changes every frame (-1 to 1 in 40 s)
+        scene.curvature = -0.6;
+        scene.sweep_rate = 0.05;
+    } else if (K && *K) {
+        scene.curvature = std::atof(K);
+    }
     world::World<T> wd(scene);
     render::DrawScratch<T> scratch;
     scratch.prepare(wd);
