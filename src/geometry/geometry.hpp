@@ -101,15 +101,30 @@ Polar<T> to_polar(T K, Vec3<T> v) {
 //   S_K(d/2)^2 = S_K((r1 - r2)/2)^2 + S_K(r1) S_K(r2) sin^2((theta1 - theta2)/2)
 // taken as S_K(d/2) = hypot(S_K((r1 - r2)/2), sqrt S_K(r1) sqrt S_K(r2) sin(...)), so that no
 // small quantity is squared (in Q16.16, the square of 0.01 keeps two significant digits).
+// The square root of S_K(r), clamped at 0 (S_K may round to a hair below 0 at the sphere's
+// antipode).
+template <class T>
+T root_S_K(T K, T r) {
+    using std::sqrt;
+    const T s = S_K(K, r);
+    return sqrt(s > T(0) ? s : T(0));
+}
+// The half-angle sine of distance_from: sin((theta1 - theta2)/2), in the scalar's finest form.
+template <class T>
+using HalfSine = decltype(sine_of_half(T{}));
+// distance(K, p, q) from its parts: r1, r2, the roots root_S_K(K, r) of both and
+// sine_of_half(theta1 - theta2), which does not depend on K (a body's shape keeps it). The same
+// bits as distance.
+template <class T>
+T distance_from(T K, T r1, T r2, T root1, T root2, HalfSine<T> half_sine) {
+    const T a = S_K(K, (r1 - r2) / T(2));
+    // sqrt(S_K(r1) S_K(r2)) sin(dtheta/2); only its square matters, so the sign is free.
+    const T g = mul_unit(root1 * root2, half_sine);
+    return T(2) * AS_K(K, hypot(a, g));
+}
 template <class T>
 T distance(T K, Polar<T> p, Polar<T> q) {
-    using std::sin, std::sqrt;
-    const T a = S_K(K, (p.r - q.r) / T(2));
-    // sqrt(S_K(r1) S_K(r2)) sin(dtheta/2); only its square matters, so the sign is free.
-    // (S_K may round to a hair below 0 at the sphere's antipode: clamp before the roots.)
-    const T s1 = S_K(K, p.r), s2 = S_K(K, q.r);
-    const T g = mul_sin_half(sqrt(s1 > T(0) ? s1 : T(0)) * sqrt(s2 > T(0) ? s2 : T(0)), p.theta - q.theta);
-    return T(2) * AS_K(K, hypot(a, g));
+    return distance_from(K, p.r, q.r, root_S_K(K, p.r), root_S_K(K, q.r), sine_of_half(p.theta - q.theta));
 }
 
 // ---- the triangle O - P - Q -----------------------------------------------------------------
@@ -467,13 +482,16 @@ bool slerp_weights(T K, T d, int n, T* ab) {
     if (w.prepare(K, d, n)) {
         for (int k = 1; k < n; ++k) ab[2 * (k - 1)] = w.a(k), ab[2 * (k - 1) + 1] = w.b(k);
     } else if (n > 1 && n < 32768) {
+        // b_k = t Sf(K (t d)^2) / sfd for t = k/n, and a_k = b_{n-k}: u = (n - k)/n rounds
+        // exactly as t does at n - k (Fractions), so each weight is computed once.
         Fractions<T> f(n);
         const auto by_sfd = divisor(sfd);
         for (int k = 1; k < n; ++k) {
             f.next();
-            const T t = f.t(k), u = f.u(k);
-            ab[2 * (k - 1)] = by_sfd(u * Sf(K * (u * d) * (u * d)));
-            ab[2 * (k - 1) + 1] = by_sfd(t * Sf(K * (t * d) * (t * d)));
+            const T t = f.t(k);
+            const T b = by_sfd(t * Sf(K * (t * d) * (t * d)));
+            ab[2 * (k - 1) + 1] = b;
+            ab[2 * (n - k - 1)] = b;  // a_{n-k}
         }
     }
     return true;

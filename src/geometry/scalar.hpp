@@ -71,6 +71,11 @@ inline float sin_half(float x) { return std::sin(std::remainder(x, 2 * pi_v<floa
 
 inline double mul_sin_half(double y, double x) { return y * sin_half(x); }
 inline float mul_sin_half(float y, float x) { return y * sin_half(x); }
+// The same in two steps, the sine kept (fx:: keeps it in Q2.30).
+inline double sine_of_half(double x) { return sin_half(x); }
+inline float sine_of_half(float x) { return sin_half(x); }
+inline double mul_unit(double y, double s) { return y * s; }
+inline float mul_unit(float y, float s) { return y * s; }
 
 // x f(u) for the curvature functions; the fx:: versions round once.
 inline double mul_Sf(double x, double u) { return x * Sf(u); }

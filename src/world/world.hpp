@@ -60,8 +60,12 @@ struct ShapeCache {
     T K{};
     bool valid = false;
     std::vector<geo::Vec3<T>> local;  // per vertex
+    std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
     std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k)
     std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
+    // Set once, whatever K: each vertex's (cos phi, sin phi), each edge's sine_of_half(phi1 - phi2).
+    std::vector<T> cos_phi, sin_phi;
+    std::vector<geo::HalfSine<T>> half_sine;
 };
 
 template <class T>
@@ -212,9 +216,16 @@ public:
         if (c.valid && c.K == K) return c;
         const std::size_t n = b.local.size(), edges = c.antipodal.size();
         const int level = b.desc->tessellation;
-        for (std::size_t i = 0; i < n; ++i) c.local[i] = geo::to_vec(K, b.local[i]);
+        for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
+            using std::sqrt;
+            const T rho = b.local[i].r, s = geo::S_K(K, rho);
+            c.local[i] = {geo::C_K(K, rho), s * c.cos_phi[i], s * c.sin_phi[i]};
+            c.root[i] = sqrt(s > T(0) ? s : T(0));
+        }
         for (std::size_t e = 0; e < edges; ++e) {
-            const T d = geo::distance(K, b.local[e], b.local[(e + 1) % n]);
+            const std::size_t f = (e + 1) % n;
+            // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
+            const T d = geo::distance_from(K, b.local[e].r, b.local[f].r, c.root[e], c.root[f], c.half_sine[e]);
             T* ab = c.weights.data() + e * static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
             c.antipodal[e] = !geo::slerp_weights(K, d, level, ab);
         }
@@ -237,7 +248,16 @@ private:
         for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
         const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (sb.closed ? n : n - 1);
         b.shape.local.resize(n);
+        b.shape.root.resize(n);
         b.shape.antipodal.resize(edges);
+        for (const Polar<T>& v : b.local) {
+            using std::cos, std::sin;
+            b.shape.cos_phi.push_back(cos(v.theta));
+            b.shape.sin_phi.push_back(sin(v.theta));
+        }
+        using geo::sine_of_half;  // and fx::sine_of_half by ADL
+        for (std::size_t e = 0; e < edges; ++e)
+            b.shape.half_sine.push_back(sine_of_half(b.local[e].theta - b.local[(e + 1) % n].theta));
         b.shape.weights.resize(edges * static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0));
         return b;
     }

@@ -389,6 +389,60 @@ PathErr body_path_error(const char* scene_name, double K0, geo::Projection proj)
     return out;
 }
 
+// World::shape's cache, refreshed when K changes, holds what the direct computation gives, bit
+// for bit: to_vec of each local vertex, and for each edge the weights of the direct form
+// (t Sf(K (t d)^2) / Sf(K d^2), u likewise) or of the recurrence, with d = geo::distance of the
+// local end points.
+template <class T>
+void shape_is_direct(const char* scene_name, double K0) {
+    world::Scene scene;
+    ASSERT_TRUE(world::builtin_scene(scene_name, {40, 6, 5}, scene));
+    scene.curvature = K0;
+    scene.curvature_rate = 0.3;
+    world::World<T> w(scene);
+    for (int frame = 0; frame < 4; ++frame) {
+        for (const auto& b : w.bodies) {
+            const world::ShapeCache<T>& c = w.shape(b);
+            ASSERT_TRUE(c.valid);
+            ASSERT_EQ(c.K, w.K);
+            const std::size_t n = b.local.size(), edges = c.antipodal.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const geo::Vec3<T> v = geo::to_vec(w.K, b.local[i]);
+                ASSERT_EQ(c.local[i].w, v.w);
+                ASSERT_EQ(c.local[i].x, v.x);
+                ASSERT_EQ(c.local[i].y, v.y);
+            }
+            const int level = b.desc->tessellation;
+            using geo::Sf;  // and fx::Sf by ADL
+            for (std::size_t e = 0; e < edges; ++e) {
+                const T d = geo::distance(w.K, b.local[e], b.local[(e + 1) % n]);
+                const T sfd = Sf(w.K * d * d);
+                geo::SlerpWeights<T> rec;
+                const bool recurrence = rec.prepare(w.K, d, level);
+                for (int k = 1; k < level && !c.antipodal[e]; ++k) {
+                    const T t = T(k) / T(level), u = T(level - k) / T(level);
+                    const T a = recurrence ? rec.a(k) : u * Sf(w.K * (u * d) * (u * d)) / sfd;
+                    const T bw = recurrence ? rec.b(k) : t * Sf(w.K * (t * d) * (t * d)) / sfd;
+                    const T* ab = c.weights.data() + e * static_cast<std::size_t>(2 * (level - 1));
+                    ASSERT_EQ(ab[2 * (k - 1)], a) << scene_name << " edge " << e << " k " << k;
+                    ASSERT_EQ(ab[2 * (k - 1) + 1], bw) << scene_name << " edge " << e << " k " << k;
+                }
+            }
+        }
+        w.press(world::Action::curvature_up);  // K changes: the next shape() refreshes
+        w.step(T(0.1));
+    }
+}
+
+TEST(FastPaths, ShapeCacheIsTheDirectComputation) {
+    shape_is_direct<fixed>("kiosk", -0.6);
+    shape_is_direct<fixed>("stress", -1.0);
+    shape_is_direct<fixed>("fig17", 0.3);
+    shape_is_direct<double>("kiosk", -0.6);
+    shape_is_direct<double>("stress", 0.5);
+    shape_is_direct<float>("kiosk", 0.8);
+}
+
 TEST(FastPaths, BodyPointsMatchThePolarPath) {
     struct Case {
         const char* scene;
