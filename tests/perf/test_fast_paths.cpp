@@ -356,4 +356,23 @@ TEST(FastPaths, DrawWorldPixelsAsBefore) {
         }
 }
 
+// ---- the backdrop's spans -------------------------------------------------------------------
+
+TEST(FastPaths, SpansAreThePixelsOneByOne) {
+    std::mt19937 rng(48);
+    for (const auto& f : {render::PixelFormat::rgb565(), render::PixelFormat::rgb888(), render::PixelFormat::xrgb8888()}) {
+        const int bpp = f.bytes_per_pixel();
+        for (int n = 0; n <= 200; ++n)
+            for (int start : {0, 1, 3}) {
+                const uint32_t word = f.pack({static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng())});
+                const int w = start + n + 2;
+                std::vector<uint8_t> x(static_cast<std::size_t>(w * bpp), 0x5A), y = x;
+                const render::Canvas cy(y.data(), w, 1, w * bpp, f);
+                render::detail::fill_span(x.data() + start * bpp, n, render::detail::SpanPattern(word, bpp));
+                for (int i = start; i < start + n; ++i) cy.set_word(i, 0, word);
+                ASSERT_EQ(x, y) << f.name << " n " << n << " from " << start;
+            }
+    }
+}
+
 }  // namespace
