@@ -81,9 +81,11 @@ struct Plotter {
     bool swap = false;  // (u, v) are (y, x)
     int last_x = -1 << 30, last_y = -1 << 30;
 
-    bool inside(int64_t x, int64_t y) const { return x >= 0 && y >= 0 && x < sink.width() && y < sink.height(); }
-    void opaque(int64_t u, int64_t v) {
-        const int64_t x = swap ? v : u, y = swap ? u : v;
+    template <class I>
+    bool inside(I x, I y) const { return x >= 0 && y >= 0 && x < sink.width() && y < sink.height(); }
+    template <class I>
+    void opaque(I u, I v) {
+        const I x = swap ? v : u, y = swap ? u : v;
         if (!inside(x, y) || (x == last_x && y == last_y)) return;
         sink.opaque(static_cast<int>(x), static_cast<int>(y));
         last_x = static_cast<int>(x), last_y = static_cast<int>(y);
@@ -98,8 +100,9 @@ struct Plotter {
         sink.opaque(static_cast<int>(swap ? v : u), static_cast<int>(swap ? u : v));
     }
     // Remember the segment's last pixel for the next segment's shared-point check.
-    void note_last(int64_t u, int64_t v) {
-        const int64_t x = swap ? v : u, y = swap ? u : v;
+    template <class I>
+    void note_last(I u, I v) {
+        const I x = swap ? v : u, y = swap ? u : v;
         if (inside(x, y)) last_x = static_cast<int>(x), last_y = static_cast<int>(y);
     }
 };
@@ -137,31 +140,31 @@ bool clip(double& x0, double& y0, double& x1, double& y1, double xmin, double ym
 
 // The major-axis columns whose centres lie in [u0, u1) (or (u1, u0] going down), as a first
 // index, a count and a step.
-struct Columns {
-    int64_t first, count, step;
+template <class I>
+struct ColumnsOf {
+    I first, count, step;
 };
+using Columns = ColumnsOf<int64_t>;
 // floor(v / 256) and ceil(v / 256) by arithmetic shifts (C++20: >> of a negative value rounds
 // toward negative infinity).
-int64_t floor_sub(int64_t v) { return v >> kSubBits; }
-int64_t ceil_sub(int64_t v) { return -((-v) >> kSubBits); }
-Columns columns(int64_t u0, int64_t u1) {
+template <class I>
+I floor_sub(I v) { return v >> kSubBits; }
+template <class I>
+I ceil_sub(I v) { return -((-v) >> kSubBits); }
+template <class I>
+ColumnsOf<I> columns(I u0, I u1) {
     if (u1 > u0) {
-        const int64_t a = ceil_sub(u0 - kSub / 2), b = ceil_sub(u1 - kSub / 2) - 1;
+        const I a = ceil_sub<I>(u0 - kSub / 2), b = ceil_sub<I>(u1 - kSub / 2) - 1;
         return {a, b >= a ? b - a + 1 : 0, 1};
     }
-    const int64_t a = floor_sub(u0 - kSub / 2), b = floor_sub(u1 - kSub / 2) + 1;
+    const I a = floor_sub<I>(u0 - kSub / 2), b = floor_sub<I>(u1 - kSub / 2) + 1;
     return {a, a >= b ? a - b + 1 : 0, -1};
 }
-
-template <class P>
-void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
-    const int64_t du = u1 - u0, dv = v1 - v0;
-    Columns col = columns(u0, u1);
-    // Only the columns on the canvas: along the major axis the range is cut once, here; across
-    // it each pixel is checked (a single unsigned compare).
-    const int64_t umax = p.swap ? p.sink.height() : p.sink.width(), vmax = p.swap ? p.sink.width() : p.sink.height();
-    if (col.count == 0) return;
-    int64_t last = col.first + (col.count - 1) * col.step;
+// Cuts the columns to [0, umax); false if none is left.
+template <class I>
+bool cut_columns(ColumnsOf<I>& col, I umax) {
+    if (col.count == 0) return false;
+    I last = col.first + (col.count - 1) * col.step;
     if (col.step > 0) {
         if (col.first < 0) col.first = 0;
         if (last > umax - 1) last = umax - 1;
@@ -171,7 +174,17 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
         if (last < 0) last = 0;
         col.count = col.first - last + 1;
     }
-    if (col.count <= 0) return;
+    return col.count > 0;
+}
+
+template <class P>
+void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
+    const int64_t du = u1 - u0, dv = v1 - v0;
+    Columns col = columns<int64_t>(u0, u1);
+    // Only the columns on the canvas: along the major axis the range is cut once, here; across
+    // it each pixel is checked (a single unsigned compare).
+    const int64_t umax = p.swap ? p.sink.height() : p.sink.width(), vmax = p.swap ? p.sink.width() : p.sink.height();
+    if (!cut_columns<int64_t>(col, umax)) return;
     // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0.
     const int64_t sgn = du > 0 ? 1 : -1;
     const int64_t A = kSub * du * sgn;
@@ -223,12 +236,97 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     p.note_last(u, row);
 }
 
+// thin() into a canvas in 32-bit arithmetic: the same pixels, without 64-bit error terms, a
+// 64-bit division per line or 64-bit compares (each a pair of instructions or a library call
+// on 32-bit ARM). For end points within +-2^21 sub-pixels (8192 px) of the origin, which
+// segment() checks (a line clipped to a canvas of up to 8188 px always is): then |du|, |dv| <=
+// 2^22, A = 256 |du| <= 2^30, |step| <= A, and the error term stays in [0, A) after each step,
+// so e + inc < 2A <= 2^31 never overflows; the column centres lie within 2^21 + 128.
+// Inside: both end points are on the canvas. Then the columns need no cut (their centres lie
+// between the end points), and no pixel needs a check: the line's point at every column centre
+// lies between the end points, so its row is on the canvas too.
+template <bool Inside, int Bpp>
+void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int32_t v1) {
+    const CanvasSink<Bpp>& sink = p.sink;
+    const int32_t du = u1 - u0, dv = v1 - v0;
+    ColumnsOf<int32_t> col = columns<int32_t>(u0, u1);
+    const int32_t vmax = p.swap ? sink.width() : sink.height();
+    if constexpr (Inside) {
+        if (col.count == 0) return;
+    } else {
+        if (!cut_columns<int32_t>(col, p.swap ? sink.height() : sink.width())) return;
+    }
+    const int32_t adu = du > 0 ? du : -du, sdv = du > 0 ? dv : -dv;  // |du|, sgn dv
+    const int32_t A = kSub * adu;
+    const int32_t uc = col.first * kSub + kSub / 2;
+    // thin()'s N = v0 |du| + (uc - u0) sgn dv, as q A + M with v0 = 256 q + r (0 <= r < 256):
+    // row = q + floor(M / A). M is within a few A (uc lies within a column or, where the cut
+    // moved the first column, a few px of u0), so its division is a 32-bit one.
+    const int32_t q = floor_sub<int32_t>(v0), r = v0 - q * kSub;
+    const int64_t M = int64_t{r} * adu + int64_t{uc - u0} * sdv;
+    int32_t row, rem;
+    if (Inside || (M >= INT32_MIN && M <= INT32_MAX)) {  // Inside: |M| < 2^30 (|uc - u0| < 256)
+        const int32_t m = static_cast<int32_t>(M);
+        int32_t f = m / A;
+        if (m - f * A < 0) --f;
+        row = q + f, rem = m - f * A;
+    } else {
+        const int64_t f = floor_div(M, A);
+        row = q + static_cast<int32_t>(f), rem = static_cast<int32_t>(M - f * A);
+    }
+    const int32_t step = kSub * sdv * col.step;  // |step| <= A
+    const int32_t u = col.first;
+    // The first pixel goes through the shared-point check (and, off the Inside case, the
+    // canvas check).
+    if constexpr (Inside) {
+        const int32_t x = p.swap ? row : u, y = p.swap ? u : row;
+        if (x != p.last_x || y != p.last_y) sink.opaque(x, y);
+    } else {
+        p.opaque(u, row);
+    }
+    // Step a byte offset along the major axis and, on a carry, across it. Going down the minor
+    // axis is going up with the error term mirrored (e = A - 1 - rem).
+    const std::ptrdiff_t major = (p.swap ? sink.stride : Bpp) * col.step;
+    std::ptrdiff_t minor = p.swap ? Bpp : sink.stride;
+    std::ptrdiff_t off = p.swap ? u * sink.stride + row * Bpp : row * sink.stride + u * Bpp;
+    int32_t e = rem, inc = step, drow = 1;
+    if (step < 0) e = A - 1 - rem, inc = -step, minor = -minor, drow = -1;
+    // The sink's base and word in locals: a pixel store may alias anything, the sink included,
+    // and would otherwise make the compiler reload them for every pixel.
+    const CanvasSink<Bpp> local = sink;
+    for (int32_t k = col.count - 1; k > 0; --k) {
+        off += major;
+        e += inc;
+        if (e >= A) e -= A, off += minor, row += drow;
+        if (Inside || static_cast<uint32_t>(row) < static_cast<uint32_t>(vmax)) local.store(off);
+    }
+    const int32_t u_last = u + (col.count - 1) * col.step;
+    if constexpr (Inside) {
+        p.last_x = p.swap ? row : u_last, p.last_y = p.swap ? u_last : row;
+    } else {
+        p.note_last(u_last, row);
+    }
+}
+
+// A thin line with both end points a and b on a canvas of at most 8192 px (within thin32's
+// bound): all in 32 bits, no clipping.
+constexpr int32_t kMaxSide32 = 8192;
+template <int Bpp>
+void thin_inside(Plotter<CanvasSink<Bpp>>& p, SubPoint a, SubPoint b) {
+    const int32_t adx = a.x > b.x ? a.x - b.x : b.x - a.x, ady = a.y > b.y ? a.y - b.y : b.y - a.y;
+    const bool x_major = adx >= ady;
+    p.swap = !x_major;
+    const int32_t u0 = x_major ? a.x : a.y, v0 = x_major ? a.y : a.x, u1 = x_major ? b.x : b.y, v1 = x_major ? b.y : b.x;
+    if (u0 == u1) return;  // a point: the caller plots end points
+    thin32<true>(p, u0, v0, u1, v1);
+}
+
 // The band of the given width around the line, per column: exact coverage (anti-aliased) or
 // the pixels whose centre it covers (thick aliased).
 template <class P>
 void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, bool aa) {
     const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
-    const Columns col = columns(u0, u1);
+    const Columns col = columns<int64_t>(u0, u1);
     if (col.count == 0) return;
     // Per column, in integers with 32 fractional bits of a pixel: the band's centre v (stepped by
     // the slope) and its minor-axis extent h = width * length / major (set up once per line).
@@ -258,8 +356,27 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     }
 }
 
+// A clipped coordinate rounded to nearest, ties away from zero: std::llround. Where the clip box
+// lies within +-2^30 (`small`), the same as std::round (one instruction on ARMv8 and x86-64
+// with SSE4.1) and a 32-bit conversion, instead of llround's library call on 32-bit targets.
+int64_t round_clipped(double x, bool small) {
+    return small ? static_cast<int64_t>(static_cast<int32_t>(std::round(x))) : static_cast<int64_t>(std::llround(x));
+}
+
 template <class P>
 void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
+    constexpr bool to_canvas = requires { p.sink.base; };
+    const bool thin_line = !style.antialias && style.width <= kSub;
+    if constexpr (to_canvas) {
+        // The common case first, all in 32 bits.
+        const int32_t w = p.sink.width(), h = p.sink.height();
+        if (thin_line && w <= kMaxSide32 && h <= kMaxSide32) {
+            const uint32_t Wi = static_cast<uint32_t>(w) * kSub, Hi = static_cast<uint32_t>(h) * kSub;
+            if (static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi && static_cast<uint32_t>(a.y) < Hi &&
+                static_cast<uint32_t>(b.y) < Hi)
+                return thin_inside(p, a, b);
+        }
+    }
     // Clip against the canvas grown by 2 px; end points inside it stay exactly as given (and
     // when both are inside, there is nothing to clip: no floating point at all).
     const int64_t Wi = int64_t{p.sink.width()} * kSub, Hi = int64_t{p.sink.height()} * kSub;
@@ -270,23 +387,32 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         double x0 = a.x, y0 = a.y, x1 = b.x, y1 = b.y;
         const double grow = style.width > kSub ? m + style.width : m;
         if (!clip(x0, y0, x1, y1, -grow, -grow, static_cast<double>(Wi) + grow, static_cast<double>(Hi) + grow)) return;
-        X0 = std::llround(x0), Y0 = std::llround(y0), X1 = std::llround(x1), Y1 = std::llround(y1);
+        // The clipped points lie in the box (to within rounding, x0 + t dx with 0 <= t <= 1).
+        const bool small = static_cast<double>(Wi > Hi ? Wi : Hi) + grow < 1073741824.0;
+        X0 = round_clipped(x0, small), Y0 = round_clipped(y0, small), X1 = round_clipped(x1, small), Y1 = round_clipped(y1, small);
     }
     const bool x_major = (X1 > X0 ? X1 - X0 : X0 - X1) >= (Y1 > Y0 ? Y1 - Y0 : Y0 - Y1);
     p.swap = !x_major;
     const int64_t u0 = x_major ? X0 : Y0, v0 = x_major ? Y0 : X0, u1 = x_major ? X1 : Y1, v1 = x_major ? Y1 : X1;
     if (u0 == u1) return;  // a point: the caller plots end points
-    if (style.antialias || style.width > kSub)
-        band(p, u0, v0, u1, v1, style.width, style.antialias);
-    else
-        thin(p, u0, v0, u1, v1);
+    if (!thin_line) return band(p, u0, v0, u1, v1, style.width, style.antialias);
+    if constexpr (to_canvas) {
+        constexpr int64_t lim = int64_t{1} << 21;  // thin32's bound
+        auto fits = [](int64_t c) { return static_cast<uint64_t>(c + lim) <= static_cast<uint64_t>(2 * lim); };
+        if (fits(u0) && fits(v0) && fits(u1) && fits(v1)) {
+            const auto n = [](int64_t c) { return static_cast<int32_t>(c); };
+            // (Inside here only on a canvas over 8192 px, whose lines take the general way.)
+            return thin32<false>(p, n(u0), n(v0), n(u1), n(v1));
+        }
+    }
+    thin(p, u0, v0, u1, v1);
 }
 
 template <class P>
 void end_point(P& p, SubPoint e, LineStyle style) {
     if (style.antialias || style.width > kSub) return;  // bands cover their ends
     p.swap = false;
-    p.opaque(floor_sub(e.x), floor_sub(e.y));
+    p.opaque(floor_sub<int64_t>(e.x), floor_sub<int64_t>(e.y));
 }
 
 SubPoint to_sub_impl(double x, double y) {
@@ -303,7 +429,23 @@ template <class Sink>
 void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style) {
     if (n <= 0) return;
     Plotter<Sink> p{sink};
-    for (int i = 0; i + 1 < n; ++i) segment(p, points[i], points[i + 1], style);
+    bool small = false;  // thin lines on a canvas of at most 8192 px: the segments on it go straight to thin_inside
+    uint32_t Wi = 0, Hi = 0;
+    if constexpr (requires { sink.base; }) {
+        small = !style.antialias && style.width <= kSub && sink.width() <= kMaxSide32 && sink.height() <= kMaxSide32;
+        Wi = static_cast<uint32_t>(sink.width()) * kSub, Hi = static_cast<uint32_t>(sink.height()) * kSub;
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        const SubPoint a = points[i], b = points[i + 1];
+        if constexpr (requires { sink.base; }) {
+            if (small && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
+                static_cast<uint32_t>(a.y) < Hi && static_cast<uint32_t>(b.y) < Hi) {
+                thin_inside(p, a, b);
+                continue;
+            }
+        }
+        segment(p, a, b, style);
+    }
     if (closed && n > 1)
         segment(p, points[n - 1], points[0], style);
     else
