@@ -74,14 +74,20 @@ struct VisitSink {
 };
 
 // Sends pixels to the sink, skipping a pixel equal to the one just written (shared polyline
-// points) and anything outside the canvas.
+// points) and anything outside the canvas or the row band [row0, row1).
 template <class Sink>
 struct Plotter {
     const Sink& sink;
+    int row0, row1;     // the rows written: [row0, row1), within the canvas
+    bool banded;        // [row0, row1) is less than the whole canvas
     bool swap = false;  // (u, v) are (y, x)
     int last_x = -1 << 30, last_y = -1 << 30;
 
-    bool inside(int64_t x, int64_t y) const { return x >= 0 && y >= 0 && x < sink.width() && y < sink.height(); }
+    Plotter(const Sink& s, RowRange rows)
+        : sink(s), row0(rows.y0 > 0 ? rows.y0 : 0), row1(rows.y1 < s.height() ? rows.y1 : s.height()),
+          banded(row0 > 0 || row1 < s.height()) {}
+
+    bool inside(int64_t x, int64_t y) const { return x >= 0 && y >= row0 && x < sink.width() && y < row1; }
     void opaque(int64_t u, int64_t v) {
         const int64_t x = swap ? v : u, y = swap ? u : v;
         if (!inside(x, y) || (x == last_x && y == last_y)) return;
@@ -108,6 +114,7 @@ int64_t floor_div(int64_t a, int64_t b) {  // b > 0
     const int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
+int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }  // b > 0
 
 // Liang-Barsky: clips the segment to [lo, hi] x [lo_y, hi_y]; false if nothing is left.
 bool clip(double& x0, double& y0, double& x1, double& y1, double xmin, double ymin, double xmax, double ymax) {
@@ -157,28 +164,51 @@ template <class P>
 void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     const int64_t du = u1 - u0, dv = v1 - v0;
     Columns col = columns(u0, u1);
-    // Only the columns on the canvas: along the major axis the range is cut once, here; across
-    // it each pixel is checked (a single unsigned compare).
-    const int64_t umax = p.swap ? p.sink.height() : p.sink.width(), vmax = p.swap ? p.sink.width() : p.sink.height();
+    // Only the columns on the canvas (and in the row band, when the major axis is y): along the
+    // major axis the range is cut once, here; across it each pixel is checked (a single
+    // unsigned compare).
+    const int64_t umin = p.swap ? p.row0 : 0, umax = p.swap ? p.row1 : p.sink.width();
+    const int64_t vmax = p.swap ? p.sink.width() : p.sink.height();
     if (col.count == 0) return;
     int64_t last = col.first + (col.count - 1) * col.step;
     if (col.step > 0) {
-        if (col.first < 0) col.first = 0;
+        if (col.first < umin) col.first = umin;
         if (last > umax - 1) last = umax - 1;
         col.count = last - col.first + 1;
     } else {
         if (col.first > umax - 1) col.first = umax - 1;
-        if (last < 0) last = 0;
+        if (last < umin) last = umin;
         col.count = col.first - last + 1;
     }
     if (col.count <= 0) return;
-    // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0.
+    // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0; at the
+    // k-th column from the first, (N + k step) / A.
     const int64_t sgn = du > 0 ? 1 : -1;
     const int64_t A = kSub * du * sgn;
     const int64_t uc = col.first * kSub + kSub / 2;
-    const int64_t N = sgn * (v0 * du + (uc - u0) * dv);
+    int64_t N = sgn * (v0 * du + (uc - u0) * dv);
+    const int64_t step = kSub * dv * col.step * sgn;  // |step| <= A
+    if (p.banded && !p.swap) {
+        // x major, rows [row0, row1): the columns k with row0 A <= N + k step < row1 A, solved
+        // exactly in integers (the row is monotonic along the line), then the line is entered
+        // at the first of them with the same row and remainder the full walk would have there.
+        const int64_t lo = p.row0 * A, hi = p.row1 * A;
+        int64_t kmin = 0, kmax = col.count - 1;
+        if (step > 0) {
+            kmin = ceil_div(lo - N, step), kmax = ceil_div(hi - N, step) - 1;
+        } else if (step < 0) {
+            kmin = floor_div(N - hi, -step) + 1, kmax = floor_div(N - lo, -step);
+        } else if (N < lo || N >= hi) {
+            return;
+        }
+        if (kmin < 0) kmin = 0;
+        if (kmax > col.count - 1) kmax = col.count - 1;
+        if (kmin > kmax) return;
+        col.first += kmin * col.step;
+        col.count = kmax - kmin + 1;
+        N += kmin * step;
+    }
     int64_t row = floor_div(N, A), rem = N - row * A;  // 0 <= rem < A
-    const int64_t step = kSub * dv * col.step * sgn;    // |step| <= A
     int64_t u = col.first;
     p.opaque(u, row);  // the first pixel goes through the shared-point check
     if constexpr (requires { p.sink.base; }) {
@@ -230,6 +260,9 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
     const Columns col = columns(u0, u1);
     if (col.count == 0) return;
+    // Rows across the band are checked one by one below: [rlo, rhi) are the rows (or columns)
+    // that may be written across it.
+    const int64_t rlo = p.swap ? 0 : p.row0, rhi = p.swap ? p.sink.width() : p.row1;
     // Per column, in integers with 32 fractional bits of a pixel: the band's centre v (stepped by
     // the slope) and its minor-axis extent h = width * length / major (set up once per line).
     constexpr double kQ = 4294967296.0;
@@ -238,22 +271,43 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     const double uc0 = static_cast<double>(col.first * kSub + kSub / 2);
     int64_t v = static_cast<int64_t>((static_cast<double>(v0) + (uc0 - static_cast<double>(u0)) * slope) / kSub * kQ);
     const int64_t dv_col = static_cast<int64_t>(slope * static_cast<double>(col.step) * kQ);
-    const int64_t vmax = p.swap ? p.sink.width() : p.sink.height();
     constexpr int64_t one = int64_t{1} << 32;
-    int64_t u = col.first;
-    for (int64_t k = 0; k < col.count; ++k, u += col.step, v += dv_col) {
+    // In a row band, only the columns that can reach it: y major, the columns are rows; x major,
+    // the columns whose centre v is within the band widened by h / 2 and a pixel (v moves by
+    // dv_col per column, exactly: v + k dv_col is what k additions give). A column more than
+    // needed costs nothing but time: the rows are checked one by one.
+    int64_t kmin = 0, kmax = col.count - 1;
+    if (p.banded) {
+        if (p.swap) {
+            if (col.step > 0)
+                kmin = p.row0 - col.first, kmax = p.row1 - 1 - col.first;
+            else
+                kmin = col.first - p.row1 + 1, kmax = col.first - p.row0;
+        } else {
+            const int64_t L = (p.row0 - 1) * one - h / 2, H = (p.row1 + 1) * one + h / 2;  // L < v < H
+            if (dv_col > 0)
+                kmin = floor_div(L - v, dv_col), kmax = ceil_div(H - v, dv_col);
+            else if (dv_col < 0)
+                kmin = floor_div(v - H, -dv_col), kmax = ceil_div(v - L, -dv_col);
+        }
+        if (kmin < 0) kmin = 0;
+        if (kmax > col.count - 1) kmax = col.count - 1;
+    }
+    int64_t u = col.first + kmin * col.step;
+    v += kmin * dv_col;
+    for (int64_t k = kmin; k <= kmax; ++k, u += col.step, v += dv_col) {
         const int64_t lo = v - h / 2, hi = v + h / 2;
         int64_t r = lo >> 32;
         if (aa) {
-            for (; (r << 32) < hi; ++r) {
-                if (static_cast<uint64_t>(r) >= static_cast<uint64_t>(vmax)) continue;
+            if (r < rlo) r = rlo;
+            for (; r < rhi && (r << 32) < hi; ++r) {
                 const int64_t top = (r << 32) > lo ? (r << 32) : lo, bottom = ((r + 1) << 32) < hi ? ((r + 1) << 32) : hi;
                 const int alpha = static_cast<int>(((bottom - top) * 255 + (one >> 1)) >> 32);
                 if (alpha > 0) p.blend(u, r, alpha);
             }
         } else {  // rows whose centre r + 1/2 lies in [lo, hi)
             const int64_t first = (lo - (one >> 1) + one - 1) >> 32, last = ((hi - (one >> 1) + one - 1) >> 32) - 1;
-            for (r = first; r <= last; ++r) p.opaque(u, r);
+            for (r = first > rlo ? first : rlo; r <= last && r < rhi; ++r) p.opaque(u, r);
         }
     }
 }
@@ -264,6 +318,13 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     // when both are inside, there is nothing to clip: no floating point at all).
     const int64_t Wi = int64_t{p.sink.width()} * kSub, Hi = int64_t{p.sink.height()} * kSub;
     int64_t X0 = a.x, Y0 = a.y, X1 = b.x, Y1 = b.y;
+    if (p.banded) {
+        // A segment that cannot reach the band: every pixel it writes lies within its end points'
+        // rows widened by the band's half width (at most 0.71 width across a major axis step).
+        const int64_t margin = 2 * kSub + 2 * int64_t{style.width};
+        const int64_t ylo = a.y < b.y ? a.y : b.y, yhi = a.y < b.y ? b.y : a.y;
+        if (yhi + margin < int64_t{p.row0} * kSub || ylo - margin >= int64_t{p.row1} * kSub) return;
+    }
     const bool inside = X0 >= 0 && Y0 >= 0 && X1 >= 0 && Y1 >= 0 && X0 < Wi && X1 < Wi && Y0 < Hi && Y1 < Hi;
     if (!inside) {
         const double m = 2.0 * kSub;
@@ -300,9 +361,10 @@ SubPoint to_sub_impl(double x, double y) {
 }
 
 template <class Sink>
-void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style) {
+void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style, RowRange rows) {
     if (n <= 0) return;
-    Plotter<Sink> p{sink};
+    Plotter<Sink> p(sink, rows);
+    if (p.row0 >= p.row1) return;
     for (int i = 0; i + 1 < n; ++i) segment(p, points[i], points[i + 1], style);
     if (closed && n > 1)
         segment(p, points[n - 1], points[0], style);
@@ -315,32 +377,33 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
 SubPoint to_sub(double x, double y) { return to_sub_impl(x, y); }
 
 template <int Bpp>
-void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
     const CanvasSink<Bpp> sink(c, color);
-    Plotter<CanvasSink<Bpp>> p{sink};
+    Plotter<CanvasSink<Bpp>> p(sink, rows);
+    if (p.row0 >= p.row1) return;
     segment(p, a, b, style);
     if (plot_end) end_point(p, b, style);
 }
 
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
     switch (c.format().bytes_per_pixel()) {
-        case 2: return line_in<2>(c, a, b, color, style, plot_end);
-        case 3: return line_in<3>(c, a, b, color, style, plot_end);
-        default: return line_in<4>(c, a, b, color, style, plot_end);
+        case 2: return line_in<2>(c, a, b, color, style, plot_end, rows);
+        case 3: return line_in<3>(c, a, b, color, style, plot_end, rows);
+        default: return line_in<4>(c, a, b, color, style, plot_end, rows);
     }
 }
 
-void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style) {
+void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style, RowRange rows) {
     switch (c.format().bytes_per_pixel()) {
-        case 2: return polyline(CanvasSink<2>(c, color), points, n, closed, style);
-        case 3: return polyline(CanvasSink<3>(c, color), points, n, closed, style);
-        default: return polyline(CanvasSink<4>(c, color), points, n, closed, style);
+        case 2: return polyline(CanvasSink<2>(c, color), points, n, closed, style, rows);
+        case 3: return polyline(CanvasSink<3>(c, color), points, n, closed, style, rows);
+        default: return polyline(CanvasSink<4>(c, color), points, n, closed, style, rows);
     }
 }
 
 void visit_polyline(int width, int height, const SubPoint* points, int n, bool closed, LineStyle style,
-                    PixelVisitor visit, void* context) {
-    polyline(VisitSink{width, height, visit, context}, points, n, closed, style);
+                    PixelVisitor visit, void* context, RowRange rows) {
+    polyline(VisitSink{width, height, visit, context}, points, n, closed, style, rows);
 }
 
 void shade_outside_circle(const Canvas& c, double cx, double cy, double r, Rgb shade, int blend_alpha) {
