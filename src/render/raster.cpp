@@ -161,7 +161,7 @@ Columns columns(int64_t u0, int64_t u1) {
 }
 
 template <class P>
-void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
+void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, bool cut) {
     const int64_t du = u1 - u0, dv = v1 - v0;
     Columns col = columns(u0, u1);
     // Only the columns on the canvas (and in the row band, when the major axis is y): along the
@@ -188,7 +188,7 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
     const int64_t uc = col.first * kSub + kSub / 2;
     int64_t N = sgn * (v0 * du + (uc - u0) * dv);
     const int64_t step = kSub * dv * col.step * sgn;  // |step| <= A
-    if (p.banded && !p.swap) {
+    if (cut && !p.swap) {
         // x major, rows [row0, row1): the columns k with row0 A <= N + k step < row1 A, solved
         // exactly in integers (the row is monotonic along the line), then the line is entered
         // at the first of them with the same row and remainder the full walk would have there.
@@ -256,7 +256,7 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
 // The band of the given width around the line, per column: exact coverage (anti-aliased) or
 // the pixels whose centre it covers (thick aliased).
 template <class P>
-void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, bool aa) {
+void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, bool aa, bool cut) {
     const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
     const Columns col = columns(u0, u1);
     if (col.count == 0) return;
@@ -277,7 +277,7 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     // dv_col per column, exactly: v + k dv_col is what k additions give). A column more than
     // needed costs nothing but time: the rows are checked one by one.
     int64_t kmin = 0, kmax = col.count - 1;
-    if (p.banded) {
+    if (cut) {
         if (p.swap) {
             if (col.step > 0)
                 kmin = p.row0 - col.first, kmax = p.row1 - 1 - col.first;
@@ -318,13 +318,6 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     // when both are inside, there is nothing to clip: no floating point at all).
     const int64_t Wi = int64_t{p.sink.width()} * kSub, Hi = int64_t{p.sink.height()} * kSub;
     int64_t X0 = a.x, Y0 = a.y, X1 = b.x, Y1 = b.y;
-    if (p.banded) {
-        // A segment that cannot reach the band: every pixel it writes lies within its end points'
-        // rows widened by the band's half width (at most 0.71 width across a major axis step).
-        const int64_t margin = 2 * kSub + 2 * int64_t{style.width};
-        const int64_t ylo = a.y < b.y ? a.y : b.y, yhi = a.y < b.y ? b.y : a.y;
-        if (yhi + margin < int64_t{p.row0} * kSub || ylo - margin >= int64_t{p.row1} * kSub) return;
-    }
     const bool inside = X0 >= 0 && Y0 >= 0 && X1 >= 0 && Y1 >= 0 && X0 < Wi && X1 < Wi && Y0 < Hi && Y1 < Hi;
     if (!inside) {
         const double m = 2.0 * kSub;
@@ -337,10 +330,17 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     p.swap = !x_major;
     const int64_t u0 = x_major ? X0 : Y0, v0 = x_major ? Y0 : X0, u1 = x_major ? X1 : Y1, v1 = x_major ? Y1 : X1;
     if (u0 == u1) return;  // a point: the caller plots end points
+    // In a row band: does the segment reach past it (raster.hpp, row_margin)? If not, every
+    // pixel it writes is in the band and the loops need not look for the band's ends.
+    bool cut = false;
+    if (p.banded) {
+        const int32_t m = row_margin(style);
+        cut = (Y0 < Y1 ? Y0 : Y1) - m < int64_t{p.row0} * kSub || (Y0 < Y1 ? Y1 : Y0) + m >= int64_t{p.row1} * kSub;
+    }
     if (style.antialias || style.width > kSub)
-        band(p, u0, v0, u1, v1, style.width, style.antialias);
+        band(p, u0, v0, u1, v1, style.width, style.antialias, cut);
     else
-        thin(p, u0, v0, u1, v1);
+        thin(p, u0, v0, u1, v1, cut);
 }
 
 template <class P>
@@ -365,6 +365,22 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
     if (n <= 0) return;
     Plotter<Sink> p(sink, rows);
     if (p.row0 >= p.row1) return;
+    if (p.banded) {
+        // Segments that cannot reach the band are passed over here, before any set-up.
+        const int32_t m = row_margin(style);
+        const int64_t lo = int64_t{p.row0} * kSub - m, hi = int64_t{p.row1} * kSub + m;  // reaches: lo <= y < hi
+        auto reaches = [lo, hi](SubPoint a, SubPoint b) {
+            return (a.y >= lo || b.y >= lo) && (a.y < hi || b.y < hi);
+        };
+        for (int i = 0; i + 1 < n; ++i)
+            if (reaches(points[i], points[i + 1])) segment(p, points[i], points[i + 1], style);
+        if (closed && n > 1) {
+            if (reaches(points[n - 1], points[0])) segment(p, points[n - 1], points[0], style);
+        } else {
+            end_point(p, points[n - 1], style);
+        }
+        return;
+    }
     for (int i = 0; i + 1 < n; ++i) segment(p, points[i], points[i + 1], style);
     if (closed && n > 1)
         segment(p, points[n - 1], points[0], style);

@@ -58,6 +58,14 @@ struct RowRange {
     int y0 = 0, y1 = INT_MAX;
 };
 
+// Every pixel a line (or polyline) writes lies in the rows its points span widened by this, in
+// 1/256 px: row y is written only if some point's y (1/256 px) is >= y * 256 - row_margin and
+// another's is < (y + 1) * 256 + row_margin. Aliased 1 px lines stay within their points' pixel
+// rows; bands reach h / 2 <= width / sqrt 2 across (h: the band's extent per column).
+constexpr int32_t row_margin(LineStyle style) {
+    return (style.antialias || style.width > kSub ? style.width : kSub) + 8;
+}
+
 // One segment from a to b. `plot_end` adds the end point's own pixel (the half-open rule
 // leaves it out, which is what polylines want).
 void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_end = true,
