@@ -371,8 +371,11 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                 const std::size_t idx = static_cast<std::size_t>(i);
                 while (s.ready[idx].load(std::memory_order_acquire) != gen) WorkerPool::pause();
                 if (s.count[idx] == 0 || s.bottom[idx] < lo || s.top[idx] >= hi) continue;
+                // A body wholly inside the band (margin included) writes only there: drawn as on
+                // one thread, without the band's per-segment checks.
+                const bool inside = s.top[idx] - margin >= int64_t{y0} * kSub && s.bottom[idx] + margin < int64_t{y1} * kSub;
                 draw_screen_points(c, s.points.data() + s.offset[idx], s.count[idx], body_color(world.bodies[idx]), line,
-                                   RowRange{y0, y1});
+                                   inside ? RowRange{} : RowRange{y0, y1});
             }
         }
     };
