@@ -250,18 +250,27 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScrat
 
 // ---- the threaded path --------------------------------------------------------------------
 
+// What the geometry phase leaves for the raster, per body: written by the thread that did the
+// body, read by all. A cache line each: bodies next to each other are done by different
+// threads, and lines written by two cores in turn (false sharing) slowed the frame down.
+struct alignas(64) BodyFrame {
+    std::atomic<uint32_t> ready{0};  // the frame generation whose points these are
+    int32_t top = 0, bottom = 0;     // the points' smallest and largest y, 1/256 px
+    std::size_t count = 0;           // entries in the body's slice of points
+};
+
 // Buffers for draw_world over a WorkerPool: every body's points at once (each body has its own
-// slice) and the rows they can reach, each thread's vertices, and a per-body "ready in frame g"
-// flag. Sized by prepare.
+// slice), a BodyFrame per body, each thread's vertices. Sized by prepare.
 template <class T>
 struct ParallelScratch {
     std::vector<SubPoint> points;
-    std::vector<std::size_t> offset, count;
-    std::vector<int32_t> top, bottom;     // per body: its points' smallest and largest y, 1/256 px
-    std::vector<geo::Polar<T>> vertices;  // threads x most_v
-    std::vector<geo::Vec3<T>> vectors;    // threads x most_v
-    std::size_t most_v = 1;
-    std::unique_ptr<std::atomic<uint32_t>[]> ready;
+    std::vector<std::size_t> offset;
+    std::unique_ptr<BodyFrame[]> frame;
+    // Each thread's vertices and 3-vectors: thread t's start at t * stride, slices whole cache
+    // lines apart (no line written by two threads).
+    std::vector<geo::Polar<T>> vertices;
+    std::vector<geo::Vec3<T>> vectors;
+    std::size_t stride_v = 1, stride_vec = 1;
     std::size_t bodies = 0;
     uint32_t generation = 0;
     int band_rows = 0;  // rows per band of the raster; 0: band_rows_for(height, threads)
@@ -270,18 +279,20 @@ struct ParallelScratch {
     void prepare(const W& world, const WorkerPool& pool) {
         bodies = world.bodies.size();
         offset.assign(bodies + 1, 0);
-        count.assign(bodies, 0);
-        top.assign(bodies, 0);
-        bottom.assign(bodies, 0);
-        most_v = 1;
+        std::size_t most_v = 1;
         for (std::size_t i = 0; i < bodies; ++i) {
-            offset[i + 1] = offset[i] + body_point_capacity(world.bodies[i]);
+            // a whole cache line (8 points) or more between two bodies' slices
+            offset[i + 1] = (offset[i] + body_point_capacity(world.bodies[i]) + 15) / 8 * 8;
             most_v = std::max(most_v, world.bodies[i].local.size());
         }
         points.resize(std::max<std::size_t>(offset[bodies], 1));
-        vertices.resize(most_v * static_cast<std::size_t>(pool.size()));
-        vectors.resize(most_v * static_cast<std::size_t>(pool.size()));
-        ready.reset(new std::atomic<uint32_t>[bodies > 0 ? bodies : 1]());
+        // (most_v entries rounded up to whole lines, plus a line: the vector's start need not be
+        // on a line boundary)
+        auto stride = [most_v](std::size_t size) { return ((most_v * size + 63) / 64 + 1) * 64 / size + 1; };
+        stride_v = stride(sizeof(geo::Polar<T>)), stride_vec = stride(sizeof(geo::Vec3<T>));
+        vertices.resize(stride_v * static_cast<std::size_t>(pool.size()));
+        vectors.resize(stride_vec * static_cast<std::size_t>(pool.size()));
+        frame.reset(new BodyFrame[bodies > 0 ? bodies : 1]);
         generation = 0;
     }
 };
@@ -305,7 +316,7 @@ void parallel_frame(const Canvas& c, const W& world, const DrawOptions& o, Paral
 
 // The same frame as draw_world(c, world, o, DrawScratch), pixel for pixel, on pool.size()
 // threads, in one pool.run:
-//  1. geometry: every thread claims body after body (an atomic counter) and computes its screen
+//  1. geometry: every thread claims bodies (an atomic counter) and computes their screen
 //     points and the rows they span; a body's flag says its points are ready;
 //  2. raster: every thread claims band after band of rows (band_rows_for) and draws it whole: its
 //     backdrop, then every body's lines clipped to the band (RowRange: exactly the pixels the
@@ -347,21 +358,27 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
     const int64_t margin = row_margin(line);  // a body's pixels lie within its points' rows widened by this
 
     auto job = [&](int tid) {
-        geo::Polar<T>* verts = s.vertices.data() + s.most_v * static_cast<std::size_t>(tid);
-        geo::Vec3<T>* vecs = s.vectors.data() + s.most_v * static_cast<std::size_t>(tid);
-        for (int i; (i = next_body.fetch_add(1, std::memory_order_relaxed)) < nb;) {
-            const std::size_t idx = static_cast<std::size_t>(i);
-            before(idx);
-            const auto& b = world.bodies[idx];
-            SubPoint* pts = s.points.data() + s.offset[idx];
-            const std::size_t n = (b.desc->grid ? !o.grids : !o.bodies) ? 0 : body_screen_points(world, b, m, o, verts, vecs, pts);
-            int32_t top = INT32_MAX, bottom = INT32_MIN;  // over the points; a break's y (INT32_MIN) is no point's
-            for (std::size_t k = 0; k < n; ++k) {
-                const int32_t y = pts[k].y;
-                top = std::min(top, y == kBreak.y ? INT32_MAX : y), bottom = std::max(bottom, y);
+        geo::Polar<T>* verts = s.vertices.data() + s.stride_v * static_cast<std::size_t>(tid);
+        geo::Vec3<T>* vecs = s.vectors.data() + s.stride_vec * static_cast<std::size_t>(tid);
+        // Bodies are claimed four at a time: neighbours in memory (World::bodies, their slices of
+        // points) mostly stay on one core (measured: ~5% faster for fixed stress than one by one).
+        constexpr int kClaim = 4;
+        for (int first; (first = next_body.fetch_add(kClaim, std::memory_order_relaxed)) < nb;) {
+            for (int i = first; i < first + kClaim && i < nb; ++i) {
+                const std::size_t idx = static_cast<std::size_t>(i);
+                before(idx);
+                const auto& b = world.bodies[idx];
+                SubPoint* pts = s.points.data() + s.offset[idx];
+                const std::size_t n = (b.desc->grid ? !o.grids : !o.bodies) ? 0 : body_screen_points(world, b, m, o, verts, vecs, pts);
+                int32_t top = INT32_MAX, bottom = INT32_MIN;  // over the points; a break's y (INT32_MIN) is no point's
+                for (std::size_t k = 0; k < n; ++k) {
+                    const int32_t y = pts[k].y;
+                    top = std::min(top, y == kBreak.y ? INT32_MAX : y), bottom = std::max(bottom, y);
+                }
+                BodyFrame& f = s.frame[idx];
+                f.count = n, f.top = top, f.bottom = bottom;
+                f.ready.store(gen, std::memory_order_release);
             }
-            s.count[idx] = n, s.top[idx] = top, s.bottom[idx] = bottom;
-            s.ready[idx].store(gen, std::memory_order_release);
         }
         for (int k; (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) {
             const int y0 = k * band_rows, y1 = std::min(y0 + band_rows, c.height());
@@ -369,12 +386,13 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
             const int64_t lo = int64_t{y0} * kSub - margin, hi = int64_t{y1} * kSub + margin;  // reaches: y in [lo, hi)
             for (int i = 0; i < nb; ++i) {
                 const std::size_t idx = static_cast<std::size_t>(i);
-                while (s.ready[idx].load(std::memory_order_acquire) != gen) WorkerPool::pause();
-                if (s.count[idx] == 0 || s.bottom[idx] < lo || s.top[idx] >= hi) continue;
+                const BodyFrame& f = s.frame[idx];
+                while (f.ready.load(std::memory_order_acquire) != gen) WorkerPool::pause();
+                if (f.count == 0 || f.bottom < lo || f.top >= hi) continue;
                 // A body wholly inside the band (margin included) writes only there: drawn as on
                 // one thread, without the band's per-segment checks.
-                const bool inside = s.top[idx] - margin >= int64_t{y0} * kSub && s.bottom[idx] + margin < int64_t{y1} * kSub;
-                draw_screen_points(c, s.points.data() + s.offset[idx], s.count[idx], body_color(world.bodies[idx]), line,
+                const bool inside = f.top - margin >= int64_t{y0} * kSub && f.bottom + margin < int64_t{y1} * kSub;
+                draw_screen_points(c, s.points.data() + s.offset[idx], f.count, body_color(world.bodies[idx]), line,
                                    inside ? RowRange{} : RowRange{y0, y1});
             }
         }
