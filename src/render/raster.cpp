@@ -74,15 +74,21 @@ struct VisitSink {
 };
 
 // Sends pixels to the sink, skipping a pixel equal to the one just written (shared polyline
-// points) and anything outside the canvas.
+// points) and anything outside the canvas or the row band [row0, row1).
 template <class Sink>
 struct Plotter {
     const Sink& sink;
+    int row0, row1;     // the rows written: [row0, row1), within the canvas
+    bool banded;        // [row0, row1) is less than the whole canvas
     bool swap = false;  // (u, v) are (y, x)
     int last_x = -1 << 30, last_y = -1 << 30;
 
+    Plotter(const Sink& s, RowRange rows)
+        : sink(s), row0(rows.y0 > 0 ? rows.y0 : 0), row1(rows.y1 < s.height() ? rows.y1 : s.height()),
+          banded(row0 > 0 || row1 < s.height()) {}
+
     template <class I>
-    bool inside(I x, I y) const { return x >= 0 && y >= 0 && x < sink.width() && y < sink.height(); }
+    bool inside(I x, I y) const { return x >= 0 && y >= row0 && x < sink.width() && y < row1; }
     template <class I>
     void opaque(I u, I v) {
         const I x = swap ? v : u, y = swap ? u : v;
@@ -111,6 +117,7 @@ int64_t floor_div(int64_t a, int64_t b) {  // b > 0
     const int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
+int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }  // b > 0
 
 // Liang-Barsky: clips the segment to [lo, hi] x [lo_y, hi_y]; false if nothing is left.
 bool clip(double& x0, double& y0, double& x1, double& y1, double xmin, double ymin, double xmax, double ymax) {
@@ -160,38 +167,61 @@ ColumnsOf<I> columns(I u0, I u1) {
     const I a = floor_sub<I>(u0 - kSub / 2), b = floor_sub<I>(u1 - kSub / 2) + 1;
     return {a, a >= b ? a - b + 1 : 0, -1};
 }
-// Cuts the columns to [0, umax); false if none is left.
+// Cuts the columns to [umin, umax); false if none is left.
 template <class I>
-bool cut_columns(ColumnsOf<I>& col, I umax) {
+bool cut_columns(ColumnsOf<I>& col, I umin, I umax) {
     if (col.count == 0) return false;
     I last = col.first + (col.count - 1) * col.step;
     if (col.step > 0) {
-        if (col.first < 0) col.first = 0;
+        if (col.first < umin) col.first = umin;
         if (last > umax - 1) last = umax - 1;
         col.count = last - col.first + 1;
     } else {
         if (col.first > umax - 1) col.first = umax - 1;
-        if (last < 0) last = 0;
+        if (last < umin) last = umin;
         col.count = col.first - last + 1;
     }
     return col.count > 0;
 }
 
 template <class P>
-void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
+void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, bool cut) {
     const int64_t du = u1 - u0, dv = v1 - v0;
     Columns col = columns<int64_t>(u0, u1);
-    // Only the columns on the canvas: along the major axis the range is cut once, here; across
-    // it each pixel is checked (a single unsigned compare).
-    const int64_t umax = p.swap ? p.sink.height() : p.sink.width(), vmax = p.swap ? p.sink.width() : p.sink.height();
-    if (!cut_columns<int64_t>(col, umax)) return;
-    // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0.
+    // Only the columns on the canvas (and in the row band, when the major axis is y): along the
+    // major axis the range is cut once, here; across it each pixel is checked (a single
+    // unsigned compare).
+    const int64_t umin = p.swap ? p.row0 : 0, umax = p.swap ? p.row1 : p.sink.width();
+    const int64_t vmax = p.swap ? p.sink.width() : p.sink.height();
+    if (!cut_columns<int64_t>(col, umin, umax)) return;
+    // v at a column centre uc, in px: (v0 du + (uc - u0) dv) / (256 du) = N / A, A > 0; at the
+    // k-th column from the first, (N + k step) / A.
     const int64_t sgn = du > 0 ? 1 : -1;
     const int64_t A = kSub * du * sgn;
     const int64_t uc = col.first * kSub + kSub / 2;
-    const int64_t N = sgn * (v0 * du + (uc - u0) * dv);
+    int64_t N = sgn * (v0 * du + (uc - u0) * dv);
+    const int64_t step = kSub * dv * col.step * sgn;  // |step| <= A
+    if (cut && !p.swap) {
+        // x major, rows [row0, row1): the columns k with row0 A <= N + k step < row1 A, solved
+        // exactly in integers (the row is monotonic along the line), then the line is entered
+        // at the first of them with the same row and remainder the full walk would have there.
+        const int64_t lo = p.row0 * A, hi = p.row1 * A;
+        int64_t kmin = 0, kmax = col.count - 1;
+        if (step > 0) {
+            kmin = ceil_div(lo - N, step), kmax = ceil_div(hi - N, step) - 1;
+        } else if (step < 0) {
+            kmin = floor_div(N - hi, -step) + 1, kmax = floor_div(N - lo, -step);
+        } else if (N < lo || N >= hi) {
+            return;
+        }
+        if (kmin < 0) kmin = 0;
+        if (kmax > col.count - 1) kmax = col.count - 1;
+        if (kmin > kmax) return;
+        col.first += kmin * col.step;
+        col.count = kmax - kmin + 1;
+        N += kmin * step;
+    }
     int64_t row = floor_div(N, A), rem = N - row * A;  // 0 <= rem < A
-    const int64_t step = kSub * dv * col.step * sgn;    // |step| <= A
     int64_t u = col.first;
     p.opaque(u, row);  // the first pixel goes through the shared-point check
     if constexpr (requires { p.sink.base; }) {
@@ -254,7 +284,7 @@ void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int
     if constexpr (Inside) {
         if (col.count == 0) return;
     } else {
-        if (!cut_columns<int32_t>(col, p.swap ? sink.height() : sink.width())) return;
+        if (!cut_columns<int32_t>(col, 0, p.swap ? sink.height() : sink.width())) return;
     }
     const int32_t adu = du > 0 ? du : -du, sdv = du > 0 ? dv : -dv;  // |du|, sgn dv
     const int32_t A = kSub * adu;
@@ -324,10 +354,13 @@ void thin_inside(Plotter<CanvasSink<Bpp>>& p, SubPoint a, SubPoint b) {
 // The band of the given width around the line, per column: exact coverage (anti-aliased) or
 // the pixels whose centre it covers (thick aliased).
 template <class P>
-void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, bool aa) {
+void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, bool aa, bool cut) {
     const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
     const Columns col = columns<int64_t>(u0, u1);
     if (col.count == 0) return;
+    // Rows across the band are checked one by one below: [rlo, rhi) are the rows (or columns)
+    // that may be written across it.
+    const int64_t rlo = p.swap ? 0 : p.row0, rhi = p.swap ? p.sink.width() : p.row1;
     // Per column, in integers with 32 fractional bits of a pixel: the band's centre v (stepped by
     // the slope) and its minor-axis extent h = width * length / major (set up once per line).
     constexpr double kQ = 4294967296.0;
@@ -336,22 +369,43 @@ void band(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width, b
     const double uc0 = static_cast<double>(col.first * kSub + kSub / 2);
     int64_t v = static_cast<int64_t>((static_cast<double>(v0) + (uc0 - static_cast<double>(u0)) * slope) / kSub * kQ);
     const int64_t dv_col = static_cast<int64_t>(slope * static_cast<double>(col.step) * kQ);
-    const int64_t vmax = p.swap ? p.sink.width() : p.sink.height();
     constexpr int64_t one = int64_t{1} << 32;
-    int64_t u = col.first;
-    for (int64_t k = 0; k < col.count; ++k, u += col.step, v += dv_col) {
+    // In a row band, only the columns that can reach it: y major, the columns are rows; x major,
+    // the columns whose centre v is within the band widened by h / 2 and a pixel (v moves by
+    // dv_col per column, exactly: v + k dv_col is what k additions give). A column more than
+    // needed costs nothing but time: the rows are checked one by one.
+    int64_t kmin = 0, kmax = col.count - 1;
+    if (cut) {
+        if (p.swap) {
+            if (col.step > 0)
+                kmin = p.row0 - col.first, kmax = p.row1 - 1 - col.first;
+            else
+                kmin = col.first - p.row1 + 1, kmax = col.first - p.row0;
+        } else {
+            const int64_t L = (p.row0 - 1) * one - h / 2, H = (p.row1 + 1) * one + h / 2;  // L < v < H
+            if (dv_col > 0)
+                kmin = floor_div(L - v, dv_col), kmax = ceil_div(H - v, dv_col);
+            else if (dv_col < 0)
+                kmin = floor_div(v - H, -dv_col), kmax = ceil_div(v - L, -dv_col);
+        }
+        if (kmin < 0) kmin = 0;
+        if (kmax > col.count - 1) kmax = col.count - 1;
+    }
+    int64_t u = col.first + kmin * col.step;
+    v += kmin * dv_col;
+    for (int64_t k = kmin; k <= kmax; ++k, u += col.step, v += dv_col) {
         const int64_t lo = v - h / 2, hi = v + h / 2;
         int64_t r = lo >> 32;
         if (aa) {
-            for (; (r << 32) < hi; ++r) {
-                if (static_cast<uint64_t>(r) >= static_cast<uint64_t>(vmax)) continue;
+            if (r < rlo) r = rlo;
+            for (; r < rhi && (r << 32) < hi; ++r) {
                 const int64_t top = (r << 32) > lo ? (r << 32) : lo, bottom = ((r + 1) << 32) < hi ? ((r + 1) << 32) : hi;
                 const int alpha = static_cast<int>(((bottom - top) * 255 + (one >> 1)) >> 32);
                 if (alpha > 0) p.blend(u, r, alpha);
             }
         } else {  // rows whose centre r + 1/2 lies in [lo, hi)
             const int64_t first = (lo - (one >> 1) + one - 1) >> 32, last = ((hi - (one >> 1) + one - 1) >> 32) - 1;
-            for (r = first; r <= last; ++r) p.opaque(u, r);
+            for (r = first > rlo ? first : rlo; r <= last && r < rhi; ++r) p.opaque(u, r);
         }
     }
 }
@@ -372,8 +426,11 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         const int32_t w = p.sink.width(), h = p.sink.height();
         if (thin_line && w <= kMaxSide32 && h <= kMaxSide32) {
             const uint32_t Wi = static_cast<uint32_t>(w) * kSub, Hi = static_cast<uint32_t>(h) * kSub;
-            if (static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi && static_cast<uint32_t>(a.y) < Hi &&
-                static_cast<uint32_t>(b.y) < Hi)
+            // In a row band, only a segment whose pixels all lie in it (row_margin).
+            const bool in_band = !p.banded || ((a.y < b.y ? a.y : b.y) - row_margin(style) >= int64_t{p.row0} * kSub &&
+                                               (a.y < b.y ? b.y : a.y) + row_margin(style) < int64_t{p.row1} * kSub);
+            if (in_band && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
+                static_cast<uint32_t>(a.y) < Hi && static_cast<uint32_t>(b.y) < Hi)
                 return thin_inside(p, a, b);
         }
     }
@@ -395,17 +452,24 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     p.swap = !x_major;
     const int64_t u0 = x_major ? X0 : Y0, v0 = x_major ? Y0 : X0, u1 = x_major ? X1 : Y1, v1 = x_major ? Y1 : X1;
     if (u0 == u1) return;  // a point: the caller plots end points
-    if (!thin_line) return band(p, u0, v0, u1, v1, style.width, style.antialias);
+    // In a row band: does the (clipped) segment reach past it (raster.hpp, row_margin)? If not,
+    // every pixel it writes is in the band and the loops need not look for the band's ends.
+    bool cut = false;
+    if (p.banded) {
+        const int32_t m = row_margin(style);
+        cut = (Y0 < Y1 ? Y0 : Y1) - m < int64_t{p.row0} * kSub || (Y0 < Y1 ? Y1 : Y0) + m >= int64_t{p.row1} * kSub;
+    }
+    if (!thin_line) return band(p, u0, v0, u1, v1, style.width, style.antialias, cut);
     if constexpr (to_canvas) {
         constexpr int64_t lim = int64_t{1} << 21;  // thin32's bound
         auto fits = [](int64_t c) { return static_cast<uint64_t>(c + lim) <= static_cast<uint64_t>(2 * lim); };
-        if (fits(u0) && fits(v0) && fits(u1) && fits(v1)) {
+        if (!cut && fits(u0) && fits(v0) && fits(u1) && fits(v1)) {
             const auto n = [](int64_t c) { return static_cast<int32_t>(c); };
             // (Inside here only on a canvas over 8192 px, whose lines take the general way.)
             return thin32<false>(p, n(u0), n(v0), n(u1), n(v1));
         }
     }
-    thin(p, u0, v0, u1, v1);
+    thin(p, u0, v0, u1, v1, cut);
 }
 
 template <class P>
@@ -426,9 +490,27 @@ SubPoint to_sub_impl(double x, double y) {
 }
 
 template <class Sink>
-void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style) {
+void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style, RowRange rows) {
     if (n <= 0) return;
-    Plotter<Sink> p{sink};
+    Plotter<Sink> p(sink, rows);
+    if (p.row0 >= p.row1) return;
+    if (p.banded) {
+        // Segments that cannot reach the band are passed over here, before any set-up (segment()
+        // takes the 32-bit paths for those wholly inside it).
+        const int32_t m = row_margin(style);
+        const int64_t lo = int64_t{p.row0} * kSub - m, hi = int64_t{p.row1} * kSub + m;  // reaches: lo <= y < hi
+        auto reaches = [lo, hi](SubPoint a, SubPoint b) {
+            return (a.y >= lo || b.y >= lo) && (a.y < hi || b.y < hi);
+        };
+        for (int i = 0; i + 1 < n; ++i)
+            if (reaches(points[i], points[i + 1])) segment(p, points[i], points[i + 1], style);
+        if (closed && n > 1) {
+            if (reaches(points[n - 1], points[0])) segment(p, points[n - 1], points[0], style);
+        } else {
+            end_point(p, points[n - 1], style);
+        }
+        return;
+    }
     bool small = false;  // thin lines on a canvas of at most 8192 px: the segments on it go straight to thin_inside
     uint32_t Wi = 0, Hi = 0;
     if constexpr (requires { sink.base; }) {
@@ -457,32 +539,33 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
 SubPoint to_sub(double x, double y) { return to_sub_impl(x, y); }
 
 template <int Bpp>
-void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
     const CanvasSink<Bpp> sink(c, color);
-    Plotter<CanvasSink<Bpp>> p{sink};
+    Plotter<CanvasSink<Bpp>> p(sink, rows);
+    if (p.row0 >= p.row1) return;
     segment(p, a, b, style);
     if (plot_end) end_point(p, b, style);
 }
 
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end) {
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
     switch (c.format().bytes_per_pixel()) {
-        case 2: return line_in<2>(c, a, b, color, style, plot_end);
-        case 3: return line_in<3>(c, a, b, color, style, plot_end);
-        default: return line_in<4>(c, a, b, color, style, plot_end);
+        case 2: return line_in<2>(c, a, b, color, style, plot_end, rows);
+        case 3: return line_in<3>(c, a, b, color, style, plot_end, rows);
+        default: return line_in<4>(c, a, b, color, style, plot_end, rows);
     }
 }
 
-void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style) {
+void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style, RowRange rows) {
     switch (c.format().bytes_per_pixel()) {
-        case 2: return polyline(CanvasSink<2>(c, color), points, n, closed, style);
-        case 3: return polyline(CanvasSink<3>(c, color), points, n, closed, style);
-        default: return polyline(CanvasSink<4>(c, color), points, n, closed, style);
+        case 2: return polyline(CanvasSink<2>(c, color), points, n, closed, style, rows);
+        case 3: return polyline(CanvasSink<3>(c, color), points, n, closed, style, rows);
+        default: return polyline(CanvasSink<4>(c, color), points, n, closed, style, rows);
     }
 }
 
 void visit_polyline(int width, int height, const SubPoint* points, int n, bool closed, LineStyle style,
-                    PixelVisitor visit, void* context) {
-    polyline(VisitSink{width, height, visit, context}, points, n, closed, style);
+                    PixelVisitor visit, void* context, RowRange rows) {
+    polyline(VisitSink{width, height, visit, context}, points, n, closed, style, rows);
 }
 
 void shade_outside_circle(const Canvas& c, double cx, double cy, double r, Rgb shade, int blend_alpha) {

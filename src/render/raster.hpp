@@ -19,8 +19,15 @@
 // - Thick aliased lines: the same band, filling the pixels whose centre it covers.
 // - Polylines do not plot a shared end point twice: each segment is half-open, and the last
 //   point of an open polyline is plotted once at the end.
+// - Row bands (RowRange): every function can be told to write only rows [y0, y1). It writes
+//   exactly the pixels (and, anti-aliased, the same blends in the same order) that the whole
+//   line writes in those rows, and nothing else: clipping still uses the whole canvas, and the
+//   loops start at the band's first column by exact integer arithmetic (no walking from the
+//   line's start) and stop after its last. Threads drawing disjoint bands of one canvas
+//   (draw_world over a WorkerPool) thus make the same picture as one thread drawing it all.
 #pragma once
 
+#include <climits>
 #include <cstdint>
 
 #include "render/canvas.hpp"
@@ -46,19 +53,33 @@ struct LineStyle {
     int32_t width = kSub;  // 1/256 px; 256 = one pixel
 };
 
+// Rows [y0, y1) of the canvas (clamped to it): the only rows a call given one writes.
+struct RowRange {
+    int y0 = 0, y1 = INT_MAX;
+};
+
+// Every pixel a line (or polyline) writes lies in the rows its points span widened by this, in
+// 1/256 px: row y is written only if some point's y (1/256 px) is >= y * 256 - row_margin and
+// another's is < (y + 1) * 256 + row_margin. Aliased 1 px lines stay within their points' pixel
+// rows; bands reach h / 2 <= width / sqrt 2 across (h: the band's extent per column).
+constexpr int32_t row_margin(LineStyle style) {
+    return (style.antialias || style.width > kSub ? style.width : kSub) + 8;
+}
+
 // One segment from a to b. `plot_end` adds the end point's own pixel (the half-open rule
 // leaves it out, which is what polylines want).
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_end = true);
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_end = true,
+               RowRange rows = {});
 
 // A polyline through n points (closed: back to the first), no pixel of a shared end point
 // plotted twice.
-void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style = {});
+void draw_polyline(const Canvas& c, const SubPoint* points, int n, bool closed, Rgb color, LineStyle style = {},
+                   RowRange rows = {});
 
 // The same polyline on a width x height grid, each pixel handed to `visit` (x, y, coverage
 // 0..255) instead of written: what draw_polyline would write, for tests and tools.
-using PixelVisitor = void (*)(int x, int y, int alpha, void* context);
 void visit_polyline(int width, int height, const SubPoint* points, int n, bool closed, LineStyle style,
-                    PixelVisitor visit, void* context);
+                    PixelVisitor visit, void* context, RowRange rows = {});
 
 // Every pixel whose centre lies outside the circle (cx, cy, r), in px, set to `shade` (the
 // shaded area outside the limit circle in the paper's figures). With `blend_alpha` < 255 the

@@ -1,9 +1,10 @@
 // The threaded frame against one thread, side by side in one run (Google Benchmark):
 //     build/p8-release/bench_parallel
-// draw_world on one thread (DrawScratch) and over a WorkerPool of 1, 2 and 4 threads (started
-// once, before timing), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk, at
-// 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double engines. The world steps once per
-// iteration (serial, included). The pixels are the same in every case (tests/perf/test_parallel).
+// World::step + draw_world on one thread (DrawScratch) against step_and_draw over a WorkerPool of
+// 1, 2 and 4 threads (started once, before timing: the bodies' steps, their geometry and the
+// raster bands on the pool), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk,
+// at 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double engines. The world and the pixels
+// are the same in every case, bit for bit (tests/perf/test_parallel).
 // Wall-clock time (UseRealTime): the threads' CPU time is not the caller's. The summary also
 // shows how the work was split: the calling thread's CPU time (Google Benchmark's CPU column)
 // and the whole process's (std::clock, every thread): on a machine whose other core is busy
@@ -43,11 +44,10 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
     const T dt(1.0 / 60);
     const std::clock_t c0 = std::clock();
     for (auto _ : st) {
-        wd.step(dt);
         if (threads == 0)
-            render::draw_world(c, wd, o, serial);
+            wd.step(dt), render::draw_world(c, wd, o, serial);
         else
-            render::draw_world(c, wd, o, par, pool);
+            render::step_and_draw(c, wd, dt, o, par, pool);
         benchmark::DoNotOptimize(px.data());
         benchmark::ClobberMemory();
     }

@@ -1,9 +1,12 @@
 // The threaded frame (draw_world over a WorkerPool) writes the same pixels as one thread, bit
 // for bit: every engine (fixed, float, double, the paper's), scenes with grids, many bodies and
-// hidden points (gnomonic at K > 0), aliased and anti-aliased, 1 to 4 threads, frame after
-// frame of a moving world, and with the backdrop left out.
+// hidden points (gnomonic at K > 0), aliased and anti-aliased, thick lines, 1 to 4 threads,
+// bands of rows from 1 row to the default, frame after frame of a moving world, and with the
+// backdrop left out. step_and_draw (the bodies' steps on the threads too) leaves the world in
+// the same state, bit for bit, as World::step.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <vector>
 
 #include "render/draw_world.hpp"
@@ -12,18 +15,43 @@ namespace {
 
 using namespace noneuclid;
 
+// Every number of every body, as bytes (the same bits, not just equal values).
+template <class W>
+bool same_state(const W& a, const W& b) {
+    if (a.K != b.K || a.time != b.time || a.frame != b.frame || a.bodies.size() != b.bodies.size()) return false;
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        const auto &p = a.bodies[i], &q = b.bodies[i];
+        const typename W::scalar x[] = {p.centre.r, p.centre.theta, p.facing, p.speed, p.travel, p.accel, p.accel_dir, p.spin};
+        const typename W::scalar y[] = {q.centre.r, q.centre.theta, q.facing, q.speed, q.travel, q.accel, q.accel_dir, q.spin};
+        if (std::memcmp(x, y, sizeof x) != 0 || p.step_carry != q.step_carry) return false;
+    }
+    return true;
+}
+
+struct Variant {
+    bool backdrop = true;
+    int band_rows = 0;     // 0: the default
+    bool fused = false;    // step_and_draw instead of step, draw_world
+    int32_t width = 256;   // line width, 1/256 px
+    bool controls = false; // thrust, turn and curvature held
+};
+
 template <class T, bool Paper = false>
 void threaded_equals_serial(const char* scene_name, double K, geo::Projection proj, bool aa, int threads,
-                            render::PixelFormat f, bool backdrop = true) {
+                            render::PixelFormat f, Variant v = {}) {
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene(scene_name, {60, 7, 6}, scene));
     scene.curvature = K;
-    world::World<T, Paper> w(scene);
+    world::World<T, Paper> w(scene), w2(scene);
+    if (v.controls)
+        for (world::World<T, Paper>* x : {&w, &w2})
+            for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) x->press(a);
     render::DrawScratch<T> serial;
     serial.prepare(w);
     render::WorkerPool pool(threads);
     render::ParallelScratch<T> par;
     par.prepare(w, pool);
+    par.band_rows = v.band_rows;
     const int W = 301, H = 207;  // odd sizes: the last band is partial
     const std::size_t stride = static_cast<std::size_t>(W * f.bytes_per_pixel());
     std::vector<uint8_t> a(stride * H, 0x11), b(stride * H, 0x11);
@@ -32,11 +60,17 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     render::DrawOptions o;
     o.projection = proj;
     o.antialias = aa;
+    o.line_width = v.width;
     for (int i = 0; i < 12; ++i) {
         w.step(T(0.05));
-        render::draw_world(ca, w, o, serial, backdrop);
-        render::draw_world(cb, w, o, par, pool, backdrop);
-        ASSERT_EQ(a, b) << scene_name << " K " << K << " threads " << threads << " frame " << i;
+        render::draw_world(ca, w, o, serial, v.backdrop);
+        if (v.fused) {
+            render::step_and_draw(cb, w2, T(0.05), o, par, pool, v.backdrop);
+            ASSERT_TRUE(same_state(w, w2)) << scene_name << " threads " << threads << " frame " << i;
+        } else {
+            render::draw_world(cb, w, o, par, pool, v.backdrop);
+        }
+        ASSERT_EQ(a, b) << scene_name << " K " << K << " threads " << threads << " frame " << i << " band rows " << v.band_rows;
     }
 }
 
@@ -60,9 +94,44 @@ TEST(Parallel, SamePixelsAsOneThreadEveryEngine) {
 
 TEST(Parallel, WithoutBackdropAndOptions) {
     threaded_equals_serial<fx::fixed>("kiosk", 0.2, geo::Projection::azimuthal_equidistant, false, 2,
-                                      render::PixelFormat::rgb565(), false);
+                                      render::PixelFormat::rgb565(), {.backdrop = false});
     threaded_equals_serial<double>("stress", -0.4, geo::Projection::azimuthal_equidistant, true, 3,
-                                   render::PixelFormat::xrgb8888(), false);
+                                   render::PixelFormat::xrgb8888(), {.backdrop = false});
+}
+
+// Bands of any height (1 row, odd, larger than the canvas), thick and thin lines, aliased and
+// anti-aliased: the bodies cross band edges everywhere.
+TEST(Parallel, AnyBandHeightAndLineWidth) {
+    const render::PixelFormat fmts[] = {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(),
+                                        render::PixelFormat::rgb888()};
+    const int32_t widths[] = {256, 700, 90};
+    int fi = 0;
+    for (int rows : {1, 9, 50, 1000})
+        for (bool aa : {false, true})
+            for (int wi = 0; wi < 2; ++wi) {
+                const render::PixelFormat f = fmts[fi++ % 3];
+                const int32_t width = widths[(fi + wi) % 3];
+                const int threads = 2 + fi % 2;
+                threaded_equals_serial<fx::fixed>("kiosk", -0.8, geo::Projection::azimuthal_equidistant, aa, threads, f,
+                                                  {.band_rows = rows, .width = width});
+                threaded_equals_serial<double>("stress", 0.4, geo::Projection::stereographic, aa, threads, f,
+                                               {.band_rows = rows, .width = width});
+            }
+}
+
+// step_and_draw: the world's bits and the pixels as World::step then draw_world on one thread,
+// with the controls held (thrust, turn, curvature), every engine.
+TEST(Parallel, StepAndDrawSameWorldAndPixels) {
+    for (int threads : {1, 2, 3, 4})
+        for (bool aa : {false, true}) {
+            const render::PixelFormat f = aa ? render::PixelFormat::xrgb8888() : render::PixelFormat::rgb565();
+            const Variant v{.fused = true, .controls = true};
+            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
+            threaded_equals_serial<fx::fixed>("kiosk", 0.5, geo::Projection::gnomonic, aa, threads, f, v);
+            threaded_equals_serial<double>("stress", 0.3, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
+            threaded_equals_serial<float>("kiosk", -0.3, geo::Projection::orthographic, aa, threads, f, v);
+            threaded_equals_serial<double, true>("kiosk", 0.6, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
+        }
 }
 
 // The pool runs each job once per thread, every time, and can be used for many frames.

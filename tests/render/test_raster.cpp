@@ -1,6 +1,7 @@
 // The rasteriser: every pixel of aliased lines against an independent reference, coverage of
 // anti-aliased lines, clipping with canary borders and odd strides in every pixel format,
-// lines far off the canvas, pixel formats, polylines, the shaded outside of the limit circle.
+// lines far off the canvas, pixel formats, polylines, the shaded outside of the limit circle,
+// row bands (RowRange) against the whole line as the reference.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -266,6 +267,143 @@ TEST(Raster, ThickLinesAndTheShadedOutside) {
             const bool outside = std::hypot(x + 0.5 - 20, y + 0.5 - 15) >= 12.3;
             EXPECT_EQ(c.get_word(x, y) != 0, outside) << x << "," << y;
         }
+}
+
+// ---- row bands ----------------------------------------------------------------------------
+
+// Line patterns for the band tests: random end points on and around the canvas, points far off
+// it and huge ones, horizontal, vertical and diagonal lines, end points on pixel centres and
+// edges, single points; polylines of 1 to 6 points, open and closed.
+struct Pattern {
+    std::vector<SubPoint> pts;
+    bool closed;
+};
+Pattern random_pattern(std::mt19937& rng, int w, int h) {
+    std::uniform_int_distribution<int> kind(0, 9), count(1, 6), coin(0, 1);
+    std::uniform_int_distribution<int32_t> sx(-20 * 256, (w + 20) * 256), sy(-20 * 256, (h + 20) * 256);
+    std::uniform_int_distribution<int32_t> px(-2, w + 2), py(-2, h + 2), small(-6 * 256, 6 * 256);
+    Pattern p;
+    p.closed = coin(rng) == 1;
+    const int n = count(rng);
+    for (int i = 0; i < n; ++i) {
+        SubPoint q{sx(rng), sy(rng)};
+        const SubPoint prev = p.pts.empty() ? q : p.pts.back();
+        switch (kind(rng)) {
+            case 0: q.y = prev.y; break;                                   // horizontal
+            case 1: q.x = prev.x; break;                                   // vertical
+            case 2: q = {prev.x + (q.x - prev.x), prev.y + (q.x - prev.x)}; break;  // 45 degrees
+            case 3: q = {px(rng) * 256 + 128, py(rng) * 256 + 128}; break;  // a pixel centre
+            case 4: q = {px(rng) * 256, py(rng) * 256}; break;              // a pixel corner
+            case 5: q = {prev.x + small(rng), prev.y + small(rng)}; break;  // short
+            case 6: q = prev; break;                                       // a point
+            case 7: q = to_sub(coin(rng) ? 3e6 : -3e6, py(rng)); break;    // far off, crossing
+            case 8: q = {q.x, coin(rng) ? (h + 400) * 256 : -400 * 256}; break;  // steep, off
+            default: break;
+        }
+        p.pts.push_back(q);
+    }
+    return p;
+}
+const LineStyle kBandStyles[] = {{false, 256}, {false, 384}, {false, 3 * 256}, {true, 256}, {true, 640}, {true, 100}};
+
+struct Visit {
+    int x, y, a;
+    friend bool operator==(const Visit&, const Visit&) = default;
+};
+void record_visit(int x, int y, int a, void* ctx) { static_cast<std::vector<Visit>*>(ctx)->push_back({x, y, a}); }
+
+// One band: in its rows, the same pixels as the whole line, anti-aliased the same coverages in
+// the same order; outside them, nothing (visited or written).
+TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
+    std::mt19937 rng(11);
+    const int W = 97, H = 61;
+    std::uniform_int_distribution<int> band(-5, H + 5), noise(0, 255);
+    for (int k = 0; k < 3000; ++k) {
+        const Pattern pat = random_pattern(rng, W, H);
+        const LineStyle st = kBandStyles[k % 6];
+        int y0 = band(rng), y1 = band(rng);
+        if (y0 > y1) std::swap(y0, y1);
+        if (k % 7 == 0) y1 = y0 + 1;  // single rows
+        const int n = static_cast<int>(pat.pts.size());
+        std::vector<Visit> full, part;
+        visit_polyline(W, H, pat.pts.data(), n, pat.closed, st, record_visit, &full);
+        visit_polyline(W, H, pat.pts.data(), n, pat.closed, st, record_visit, &part, {y0, y1});
+        std::vector<Visit> want;
+        for (const Visit& v : full)
+            if (v.y >= y0 && v.y < y1) want.push_back(v);
+        for (const Visit& v : part) ASSERT_TRUE(v.y >= y0 && v.y < y1 && v.x >= 0 && v.x < W) << "pattern " << k;
+        if (st.antialias) {
+            ASSERT_EQ(part, want) << "pattern " << k << " rows " << y0 << ".." << y1;
+        } else {  // aliased: the same set (a shared point may be skipped in one and not the other)
+            auto key = [](const std::vector<Visit>& vs) {
+                std::set<std::pair<int, int>> out;
+                for (const Visit& v : vs) out.insert({v.x, v.y});
+                return out;
+            };
+            ASSERT_EQ(key(part), key(want)) << "pattern " << k << " rows " << y0 << ".." << y1;
+        }
+        // The same on a canvas over a noisy background (blends depend on it), every format.
+        const PixelFormat f = kFormats[k % 6];
+        Guarded a(W, H, f), b(W, H, f);
+        const Canvas ca = a.canvas(), cb = b.canvas();
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const Rgb bg{static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng))};
+                ca.set(x, y, bg), cb.set(x, y, bg);
+            }
+        std::vector<uint32_t> before;  // the background, row by row
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) before.push_back(ca.get_word(x, y));
+        const Rgb col{static_cast<uint8_t>(noise(rng)), 200, 40};
+        draw_polyline(ca, pat.pts.data(), n, pat.closed, col, st);
+        draw_polyline(cb, pat.pts.data(), n, pat.closed, col, st, {y0, y1});
+        ASSERT_TRUE(b.canary_intact());
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                const bool in = y >= y0 && y < y1;
+                ASSERT_EQ(cb.get_word(x, y), in ? ca.get_word(x, y) : before[static_cast<std::size_t>(y * W + x)])
+                    << "pattern " << k << " pixel " << x << "," << y << " rows " << y0 << ".." << y1;
+            }
+        if (n == 2 && !pat.closed) {  // draw_line too, with and without its end point
+            for (bool end : {true, false}) {
+                Guarded c(W, H, f), d(W, H, f);
+                draw_line(c.canvas(), pat.pts[0], pat.pts[1], col, st, end);
+                draw_line(d.canvas(), pat.pts[0], pat.pts[1], col, st, end, {y0, y1});
+                for (int y = 0; y < H; ++y)
+                    for (int x = 0; x < W; ++x)
+                        ASSERT_EQ(d.canvas().get_word(x, y), y >= y0 && y < y1 ? c.canvas().get_word(x, y) : 0u) << "line " << k;
+            }
+        }
+    }
+}
+
+// Many overlapping polylines drawn band by band, each band's in the same order, over a random
+// split of the rows: the same canvas as drawing them whole (what draw_world's threads do).
+TEST(Raster, RowBandsTiledMakeTheSamePicture) {
+    std::mt19937 rng(12);
+    const int W = 131, H = 83;
+    std::uniform_int_distribution<int> cut(1, 20), noise(0, 255);
+    for (int k = 0; k < 300; ++k) {
+        const PixelFormat f = kFormats[k % 6];
+        std::vector<Pattern> pats;
+        std::vector<Rgb> cols;
+        for (int i = 0; i < 25; ++i) {
+            pats.push_back(random_pattern(rng, W, H));
+            cols.push_back({static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng))});
+        }
+        const LineStyle st = kBandStyles[k % 6];
+        Guarded a(W, H, f), b(W, H, f);
+        for (std::size_t i = 0; i < pats.size(); ++i)
+            draw_polyline(a.canvas(), pats[i].pts.data(), static_cast<int>(pats[i].pts.size()), pats[i].closed, cols[i], st);
+        for (int y0 = -3; y0 < H + 3;) {
+            const int y1 = y0 + (k % 5 == 0 ? 1 : cut(rng));
+            for (std::size_t i = 0; i < pats.size(); ++i)
+                draw_polyline(b.canvas(), pats[i].pts.data(), static_cast<int>(pats[i].pts.size()), pats[i].closed, cols[i], st, {y0, y1});
+            y0 = y1;
+        }
+        ASSERT_TRUE(b.canary_intact());
+        ASSERT_EQ(a.bytes, b.bytes) << "set " << k << " format " << f.name;
+    }
 }
 
 }  // namespace
