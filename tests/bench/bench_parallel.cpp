@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <map>
 #include <string>
@@ -38,6 +39,7 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
     render::WorkerPool pool(threads > 0 ? threads : 1);
     render::ParallelScratch<T> par;
     par.prepare(wd, pool);
+    if (const char* e = std::getenv("BAND_ROWS")) par.band_rows = std::atoi(e);  // rows per band; unset: one band per thread (home mode)
     std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
     const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::DrawOptions o;
