@@ -437,11 +437,11 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                 const int32_t y = pts[k].y;
                 top = std::min(top, y == kBreak.y ? INT32_MAX : y), bottom = std::max(bottom, y);
             }
-            if (homes && top <= bottom) {  // next frame's home: the band of the points' middle row
-                const int64_t mid = (int64_t{top} + bottom) / 2 / kSub / band_rows;
-                s.home[(gen + 1) & 1][idx] = static_cast<uint8_t>(std::clamp<int64_t>(mid, 0, threads - 1));
-            } else if (homes) {
-                s.home[(gen + 1) & 1][idx] = s.home[gen & 1][idx];
+            if (homes) {  // next frame's home: the band of the points' middle row
+                const int64_t mid = top <= bottom ? (int64_t{top} + bottom) / 2 / kSub / band_rows : s.home[gen & 1][idx];
+                const uint8_t h = static_cast<uint8_t>(std::clamp<int64_t>(mid, 0, threads - 1));
+                // Written only when it changes (rarely): the threads' bodies share these lines.
+                if (s.home[(gen + 1) & 1][idx] != h) s.home[(gen + 1) & 1][idx] = h;
             }
             BodyFrame& f = s.frame[idx];
             f.count = n, f.top = top, f.bottom = bottom;

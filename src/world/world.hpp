@@ -69,7 +69,7 @@ struct ShapeCache {
 };
 
 template <class T>
-struct Body {
+struct alignas(64) Body {
     Polar<T> centre;
     T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
