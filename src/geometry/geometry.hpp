@@ -104,10 +104,13 @@ Polar<T> to_polar(T K, Vec3<T> v) {
 // The square root of S_K(r), clamped at 0 (S_K may round to a hair below 0 at the sphere's
 // antipode).
 template <class T>
-T root_S_K(T K, T r) {
+T clamped_root(T s) {
     using std::sqrt;
-    const T s = S_K(K, r);
     return sqrt(s > T(0) ? s : T(0));
+}
+template <class T>
+T root_S_K(T K, T r) {
+    return clamped_root(S_K(K, r));
 }
 // The half-angle sine of distance_from: sin((theta1 - theta2)/2), in the scalar's finest form.
 template <class T>
@@ -247,12 +250,18 @@ Edge<T> edge(T K, Polar<T> p, Polar<T> q) {
 //     d = 0. For antipodal ends on the sphere (S_K(d) = 0: every great circle through them is
 //     a geodesic) the edge follows the one through p's radial line. out(k, Polar) is called
 //     for each point.
+// Whether an edge of length d (sfd = Sf(K d^2)) has antipodal ends on the sphere: S_K(d) ~ 0
+// with d near pi/sqrt K, not merely d ~ 0. The slerp's weights divide by S_K(d) and cannot be
+// used there.
+template <class T>
+bool antipodal_edge(T K, T d, T sfd) {
+    return K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4);
+}
 template <class T, class Out>
 void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
     const T d = distance(K, p, q);
     const T sfd = Sf(K * d * d);
-    // Antipodal on the sphere (S_K(d) ~ 0 with d near pi/sqrt K, not merely d ~ 0).
-    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) {
+    if (antipodal_edge(K, d, sfd)) {
         const T heading = p.r > T(0) ? p.theta : q.theta;
         out(0, p);
         for (int k = 1; k < n; ++k) out(k, walk(K, p, heading, d * T(k) / T(n)).end);
@@ -477,7 +486,7 @@ private:
 template <class T>
 bool slerp_weights(T K, T d, int n, T* ab) {
     const T sfd = Sf(K * d * d);
-    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) return false;
+    if (antipodal_edge(K, d, sfd)) return false;
     SlerpWeights<T> w;
     if (w.prepare(K, d, n)) {
         for (int k = 1; k < n; ++k) ab[2 * (k - 1)] = w.a(k), ab[2 * (k - 1) + 1] = w.b(k);
@@ -555,7 +564,7 @@ void edge_projected(T K, Polar<T> p, Polar<T> q, const Vec3<T>& P, const Vec3<T>
         const ProjectedPoint<T> pp = project_polar(K, x, proj);
         out(k, pp.visible, pp.X, pp.Y);
     };
-    if (K > T(0) && K * d * d > T(2) && sfd * d <= num<T>(1e-4)) {  // antipodal: as edge_points
+    if (antipodal_edge(K, d, sfd)) {  // as edge_points
         const T heading = p.r > T(0) ? p.theta : q.theta;
         polar(0, p);
         for (int k = 1; k < n; ++k) polar(k, walk(K, p, heading, d * T(k) / T(n)).end);

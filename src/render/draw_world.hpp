@@ -229,11 +229,10 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
             add_xy(pp.visible, pp.X, pp.Y);
             return count;
         }
-        const std::size_t per_edge = static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
         for (std::size_t e = 0; e < edges; ++e) {
             const std::size_t f = (e + 1) % n;
             if (!sh.antipodal[e]) {
-                geo::edge_projected(world.K, vecs[e], vecs[f], sh.weights.data() + e * per_edge, level, o.projection, e == 0, emit);
+                geo::edge_projected(world.K, vecs[e], vecs[f], sh.weights_of(e), level, o.projection, e == 0, emit);
             } else {  // antipodal ends: walked from the polar end points (rare: K > 0, an edge of length pi / sqrt K)
                 verts[0] = geo::to_polar(world.K, vecs[e]), verts[1] = geo::to_polar(world.K, vecs[f]);  // n >= 2
                 geo::edge_projected(world.K, verts[0], verts[1], vecs[e], vecs[f], level, o.projection, e == 0, emit);
@@ -351,15 +350,6 @@ struct ParallelScratch {
     }
 };
 
-// Rows per band of the threaded raster: enough bands that they even out between the threads
-// (a band is one thread's), few enough that a body is looked at in few of them (every band a
-// body reaches walks its points and sets up the segments that cross in): four per thread, at
-// least 16 rows. One thread: one band.
-inline int band_rows_for(int height, int threads) {
-    if (threads <= 1) return height > 0 ? height : 1;
-    return std::max(16, (height + 4 * threads - 1) / (4 * threads));
-}
-
 namespace detail {
 // The threaded frame (draw_world and step_and_draw below): before(i) is called for body i on
 // the thread that claimed it, just before its geometry.
@@ -370,13 +360,15 @@ void parallel_frame(const Canvas& c, const W& world, const DrawOptions& o, Paral
 
 // The same frame as draw_world(c, world, o, DrawScratch), pixel for pixel, on pool.size()
 // threads, in one pool.run:
-//  1. geometry: every thread claims bodies (an atomic counter) and computes their screen
-//     points and the rows they span; a body's flag says its points are ready;
-//  2. raster: every thread claims band after band of rows (band_rows_for) and draws it whole: its
-//     backdrop, then every body's lines clipped to the band (RowRange: exactly the pixels the
-//     whole line has there), in the world's order, waiting (yielding) on a body whose points
-//     another thread is still computing. Bands are disjoint, so no two threads write one pixel,
-//     and each pixel gets the same writes in the same order as on one thread.
+//  1. geometry: each thread computes its bodies' screen points and the rows they span (by
+//     default its home bodies, ParallelScratch::home; with band_rows set, bodies claimed from
+//     an atomic counter); a body's flag says its points are ready;
+//  2. raster: bands of rows (by default one per thread, thread t band t; with band_rows set,
+//     claimed as they come), each drawn whole: its backdrop, then every body's lines clipped to
+//     the band (RowRange: exactly the pixels the whole line has there), in the world's order,
+//     waiting (yielding) on a body whose points another thread is still computing. Bands are
+//     disjoint, so no two threads write one pixel, and each pixel gets the same writes in the
+//     same order as on one thread.
 // The scratch must have been prepared for this world and this pool.
 template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
@@ -411,9 +403,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
     // the split saved (fixed 1.19x); one band each, 1.36x; and home bodies, 1.38-1.41x (double
     // 1.37-1.51x, then 1.67-1.84x). The pixels are the same whatever thread does what.
     const bool homes = threads > 1 && threads <= 255 && s.band_rows == 0;
-    const int band_rows = s.band_rows > 0 ? s.band_rows
-                          : homes      ? std::max(1, (c.height() + threads - 1) / threads)
-                                       : band_rows_for(c.height(), threads);
+    const int band_rows = s.band_rows > 0 ? s.band_rows : std::max(1, (c.height() + threads - 1) / threads);
     const int bands = (c.height() + band_rows - 1) / band_rows;
     const int nb = static_cast<int>(std::min(s.bodies, world.bodies.size()));
     const uint32_t gen = ++s.generation;
@@ -455,9 +445,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
             for (int first; (first = next_body.fetch_add(kClaim, std::memory_order_relaxed)) < nb;)
                 for (int i = first; i < first + kClaim && i < nb; ++i) do_body(static_cast<std::size_t>(i));
         }
-        // (Home mode: thread t draws band t, the one whose bodies it did.)
-        for (int k = homes ? tid : 0; homes ? k < bands && k == tid : (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;
-             k = homes ? bands : k) {
+        auto draw_band = [&](int k) {
             const int y0 = k * band_rows, y1 = std::min(y0 + band_rows, c.height());
             if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
             const int64_t lo = int64_t{y0} * kSub - margin, hi = int64_t{y1} * kSub + margin;  // reaches: y in [lo, hi)
@@ -472,6 +460,11 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                 draw_screen_points(c, s.points.data() + s.offset[idx], f.count, body_color(world.bodies[idx]), line,
                                    inside ? RowRange{} : RowRange{y0, y1});
             }
+        };
+        if (homes) {  // thread t draws band t, the one whose bodies it did
+            if (tid < bands) draw_band(tid);
+        } else {
+            for (int k; (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) draw_band(k);
         }
     };
     pool.run(job);

@@ -61,11 +61,14 @@ struct ShapeCache {
     bool valid = false;
     std::vector<geo::Vec3<T>> local;  // per vertex
     std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
-    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k)
+    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k): weights_of(e)
     std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
     // Set once, whatever K: each vertex's (cos phi, sin phi), each edge's sine_of_half(phi1 - phi2).
     std::vector<T> cos_phi, sin_phi;
     std::vector<geo::HalfSine<T>> half_sine;
+    std::size_t per_edge = 0;  // 2 (level - 1): the weights of one edge
+    T* weights_of(std::size_t e) { return weights.data() + e * per_edge; }
+    const T* weights_of(std::size_t e) const { return weights.data() + e * per_edge; }
 };
 
 template <class T>
@@ -231,17 +234,15 @@ public:
         const std::size_t n = b.local.size(), edges = c.antipodal.size();
         const int level = b.desc->tessellation;
         for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
-            using std::sqrt;
             const T rho = b.local[i].r, s = geo::S_K(K, rho);
             c.local[i] = {geo::C_K(K, rho), s * c.cos_phi[i], s * c.sin_phi[i]};
-            c.root[i] = sqrt(s > T(0) ? s : T(0));
+            c.root[i] = geo::clamped_root(s);
         }
         for (std::size_t e = 0; e < edges; ++e) {
             const std::size_t f = (e + 1) % n;
             // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
             const T d = geo::distance_from(K, b.local[e].r, b.local[f].r, c.root[e], c.root[f], c.half_sine[e]);
-            T* ab = c.weights.data() + e * static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
-            c.antipodal[e] = !geo::slerp_weights(K, d, level, ab);
+            c.antipodal[e] = !geo::slerp_weights(K, d, level, c.weights_of(e));
         }
         c.K = K, c.valid = true;
         return c;
@@ -272,7 +273,8 @@ private:
         using geo::sine_of_half;  // and fx::sine_of_half by ADL
         for (std::size_t e = 0; e < edges; ++e)
             b.shape.half_sine.push_back(sine_of_half(b.local[e].theta - b.local[(e + 1) % n].theta));
-        b.shape.weights.resize(edges * static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0));
+        b.shape.per_edge = static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0);
+        b.shape.weights.resize(edges * b.shape.per_edge);
         return b;
     }
     void copy_from(const World& o) {
