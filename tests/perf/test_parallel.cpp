@@ -2,7 +2,7 @@
 // for bit: every engine (fixed, float, double, the paper's), scenes with grids, many bodies and
 // hidden points (gnomonic at K > 0), aliased and anti-aliased, thick lines, 1 to 4 threads,
 // bands of rows from 1 row to the default, frame after frame of a moving world, and with the
-// backdrop left out. step_and_draw (the bodies' steps on the threads too) leaves the world in
+// backdrop left out, and one band per thread with its edges anywhere. step_and_draw (the bodies' steps on the threads too) leaves the world in
 // the same state, bit for bit, as World::step.
 #include <gtest/gtest.h>
 
@@ -34,6 +34,7 @@ struct Variant {
     bool fused = false;    // step_and_draw instead of step, draw_world
     int32_t width = 256;   // line width, 1/256 px
     bool controls = false; // thrust, turn and curvature held
+    std::vector<double> edges = {};  // one band per thread at these fixed rows (no balancing); empty: balanced
 };
 
 template <class T, bool Paper = false>
@@ -52,6 +53,7 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     render::ParallelScratch<T> par;
     par.prepare(w, pool);
     par.band_rows = v.band_rows;
+    if (!v.edges.empty()) par.edge = v.edges, par.balance = false;
     const int W = 301, H = 207;  // odd sizes: the last band is partial
     const std::size_t stride = static_cast<std::size_t>(W * f.bytes_per_pixel());
     std::vector<uint8_t> a(stride * H, 0x11), b(stride * H, 0x11);
@@ -117,6 +119,49 @@ TEST(Parallel, AnyBandHeightAndLineWidth) {
                 threaded_equals_serial<double>("stress", 0.4, geo::Projection::stereographic, aa, threads, f,
                                                {.band_rows = rows, .width = width});
             }
+}
+
+// One band per thread with its edges anywhere (as balance_bands may put them): one-row bands,
+// a thread with nearly all rows, uneven thirds.
+TEST(Parallel, BandEdgesAnywhere) {
+    const std::vector<std::vector<double>> two = {{0, 1, 207}, {0, 206, 207}, {0, 61.4, 207}, {0, 150.6, 207}};
+    for (const auto& e : two)
+        for (bool aa : {false, true}) {
+            const render::PixelFormat f = aa ? render::PixelFormat::xrgb8888() : render::PixelFormat::rgb565();
+            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, aa, 2, f, {.fused = true, .edges = e});
+            threaded_equals_serial<double>("kiosk", 0.4, geo::Projection::stereographic, aa, 2, f, {.edges = e});
+        }
+    threaded_equals_serial<fx::fixed>("stress", -0.6, geo::Projection::azimuthal_equidistant, true, 3,
+                                      render::PixelFormat::rgb565(), {.width = 700, .edges = {0, 1, 2, 207}});
+    threaded_equals_serial<double>("stress", 0.2, geo::Projection::azimuthal_equidistant, false, 3,
+                                   render::PixelFormat::rgb888(), {.edges = {0, 180, 199.5, 207}});
+}
+
+// balance_bands, on made-up busy times: an edge moves towards the busier band by gain x the
+// relative difference x the two bands' rows, stays when the times are equal, and never leaves a
+// band without a row.
+TEST(Parallel, BalanceBandsMovesEdgesTowardsTheBusierBand) {
+    std::vector<double> edge = {0, 100, 200}, smoothed = {0, 0};
+    const double busy[] = {3e-4, 1e-4};
+    render::balance_bands(edge, busy, smoothed, 0.5, 0.75);
+    EXPECT_DOUBLE_EQ(smoothed[0], 3e-4);  // the first frame is taken as it is
+    EXPECT_DOUBLE_EQ(edge[1], 100 - 0.5 * (3e-4 - 1e-4) / (3e-4 + 1e-4) * 200);  // 50
+    const double equal[] = {2e-4, 2e-4};
+    render::balance_bands(edge, equal, smoothed, 0.5, 0.75);  // smoothed: 2.75e-4, 1.25e-4
+    EXPECT_NEAR(edge[1], 50 - 0.5 * (1.5e-4 / 4e-4) * 200, 1e-9);
+    std::vector<double> e3 = {0, 10, 20, 207}, s3 = {0, 0, 0};
+    const double skewed[] = {1.0, 1e-9, 1.0};
+    for (int i = 0; i < 200; ++i) {
+        render::balance_bands(e3, skewed, s3);
+        ASSERT_GE(e3[1], e3[0] + 1);
+        ASSERT_GE(e3[2], e3[1] + 1);
+        ASSERT_LE(e3[2], e3[3] - 1);
+    }
+    EXPECT_NEAR(e3[1], 1, 0.05);  // the busy first band shrank to its one row
+    std::vector<double> flat = {0, 70, 207}, sf = {0, 0};
+    const double same[] = {5e-5, 5e-5};
+    render::balance_bands(flat, same, sf);
+    EXPECT_DOUBLE_EQ(flat[1], 70);
 }
 
 // step_and_draw: the world's bits and the pixels as World::step then draw_world on one thread,
