@@ -17,6 +17,10 @@ if(NONEUCLID_HAVE_BENCHMARK)
     endif()
 endif()
 
+# One thread against two, interleaved in one process (README "Threads"): a plain program.
+add_executable(parallel_ab bench/parallel_ab.cpp)
+target_link_libraries(parallel_ab PRIVATE noneuclid_render noneuclid_warnings Threads::Threads)
+
 # Frames for instruction counting under qemu-user (tests/bench/arm-frame-insncount.sh): a
 # plain program, static when cross-compiling.
 add_executable(frame_probe bench/frame_probe.cpp)

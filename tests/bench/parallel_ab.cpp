@@ -1,0 +1,82 @@
+// The threaded frame against one thread, interleaved in one process, to take a shared host's
+// noise out of the comparison (README "Threads"):
+//     build/release/parallel_ab [frames per variant, default 3000]
+// For stress and kiosk at 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double: chunks of 50
+// frames in turn of (a) World::step + draw_world on one thread, (b) step_and_draw on a pool of 2
+// with the band edges balanced (the default), (c) the same with equal bands (balance off), each
+// variant on its own copy of the world. A burst of noise from the host lands on all three
+// alike. Prints each variant's median and 10th percentile frame in us, the speedups of the
+// medians and where the balance left the edge between the two bands.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+using clk = std::chrono::steady_clock;
+
+double quantile(std::vector<double> x, double p) {
+    std::sort(x.begin(), x.end());
+    return x[static_cast<std::size_t>(p * static_cast<double>(x.size() - 1))];
+}
+
+template <class T>
+void compare(const char* scene_name, int w, int h, render::PixelFormat f, int frames) {
+    world::Scene scene;
+    world::builtin_scene(scene_name, {}, scene);
+    world::World<T> w0(scene), w1(scene), w2(scene);
+    render::DrawScratch<T> serial;
+    serial.prepare(w0);
+    render::WorkerPool pool(2);
+    render::ParallelScratch<T> balanced, equal;
+    balanced.prepare(w1, pool);
+    equal.prepare(w2, pool);
+    equal.balance = false;
+    std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
+    const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
+    const render::DrawOptions o;
+    const T dt(1.0 / 60);
+    std::vector<double> ts, tb, te;
+    auto timed = [](std::vector<double>& out, auto&& frame) {
+        const clk::time_point a = clk::now();
+        frame();
+        out.push_back(std::chrono::duration<double, std::micro>(clk::now() - a).count());
+    };
+    constexpr int kChunk = 50;
+    for (int done = 0; done < frames; done += kChunk)
+        for (int v = 0; v < 3; ++v)
+            for (int i = 0; i < kChunk; ++i) {
+                if (v == 0) timed(ts, [&] { w0.step(dt), render::draw_world(c, w0, o, serial); });
+                if (v == 1) timed(tb, [&] { render::step_and_draw(c, w1, dt, o, balanced, pool); });
+                if (v == 2) timed(te, [&] { render::step_and_draw(c, w2, dt, o, equal, pool); });
+            }
+    const double s = quantile(ts, 0.5), b = quantile(tb, 0.5), e = quantile(te, 0.5);
+    std::printf("| %s | %dx%d | %s | %.0f (%.0f) | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.1f of %d |\n", scene_name, w, h,
+                sizeof(T) == sizeof(double) ? "double" : "fixed", s, quantile(ts, 0.1), b, quantile(tb, 0.1), s / b, e,
+                quantile(te, 0.1), s / e, balanced.edge.size() > 1 ? balanced.edge[1] : 0.0, h);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const int frames = argc > 1 ? std::atoi(argv[1]) : 3000;
+    if (frames < 50) {
+        std::fprintf(stderr, "parallel_ab: frames per variant must be 50 or more (got %s)\n", argc > 1 ? argv[1] : "");
+        return 2;
+    }
+    std::printf("frame in us: median (10th percentile) of %d frames per variant, interleaved in chunks of 50\n\n", frames);
+    std::printf("| scene | display | engine | 1 thread | 2 threads, balanced | speedup | 2 threads, equal bands | speedup | "
+                "edge after |\n|---|---|---|---:|---:|---:|---:|---:|---:|\n");
+    for (const char* sc : {"stress", "kiosk"}) {
+        compare<fx::fixed>(sc, 800, 480, render::PixelFormat::rgb565(), frames);
+        compare<double>(sc, 800, 480, render::PixelFormat::rgb565(), frames);
+        compare<fx::fixed>(sc, 1920, 1080, render::PixelFormat::xrgb8888(), frames);
+        compare<double>(sc, 1920, 1080, render::PixelFormat::xrgb8888(), frames);
+    }
+    return 0;
+}
