@@ -344,14 +344,13 @@ inline fixed cos(fixed x) noexcept { return cos(angle::from_radians(x)); }
 // sin(x/2) for x first brought into [-pi, pi): the halving is exact in the binary angle, where
 // x / 2 in Q16.16 would round away half a step.
 inline fixed sin_half(fixed x) noexcept { return sin(angle::from_radians(x).half()); }
-// y sin(x/2), rounded once from the Q2.30 sine: y does not multiply sin's Q16.16 rounding.
-// In two steps where the sine is kept (it often does not depend on K): sine_of_half(x), then
+// y sin(x/2), rounded once from the Q2.30 sine (y does not multiply sin's Q16.16 rounding), in
+// two steps so that the sine can be kept (it often does not depend on K): sine_of_half(x), then
 // mul_unit(y, that).
 inline unit sine_of_half(fixed x) noexcept { return sin_unit(angle::from_radians(x).half()); }
 inline fixed mul_unit(fixed y, unit s) noexcept {
     return fixed::from_raw(detail::saturate32(detail::round_shift(int64_t{y.raw()} * s.raw(), 30)));
 }
-inline fixed mul_sin_half(fixed y, fixed x) noexcept { return mul_unit(y, sine_of_half(x)); }
 
 // The direction of (x, y) as a binary angle, counter-clockwise from +x. Works on the raw
 // integers, so any Q format (the same for both) gives the same answer. atan2(0, 0) = 0.

@@ -69,9 +69,8 @@ inline float hypot(float x, float y) { return std::sqrt(x * x + y * y); }
 inline double sin_half(double x) { return std::sin(std::remainder(x, 2 * pi_v<double>) / 2); }
 inline float sin_half(float x) { return std::sin(std::remainder(x, 2 * pi_v<float>) / 2); }
 
-inline double mul_sin_half(double y, double x) { return y * sin_half(x); }
-inline float mul_sin_half(float y, float x) { return y * sin_half(x); }
-// The same in two steps, the sine kept (fx:: keeps it in Q2.30).
+// y sin(x/2) in two steps, the sine kept: sine_of_half(x), then mul_unit(y, that) (fx:: keeps
+// the sine in Q2.30).
 inline double sine_of_half(double x) { return sin_half(x); }
 inline float sine_of_half(float x) { return sin_half(x); }
 inline double mul_unit(double y, double s) { return y * s; }
