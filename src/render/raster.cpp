@@ -417,6 +417,12 @@ int64_t round_clipped(double x, bool small) {
     return small ? static_cast<int64_t>(static_cast<int32_t>(std::round(x))) : static_cast<int64_t>(std::llround(x));
 }
 
+// Both end points on a canvas of Wi x Hi sub-pixels (a negative coordinate compares as huge).
+bool both_on(SubPoint a, SubPoint b, uint32_t Wi, uint32_t Hi) {
+    return static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi && static_cast<uint32_t>(a.y) < Hi &&
+           static_cast<uint32_t>(b.y) < Hi;
+}
+
 template <class P>
 void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     constexpr bool to_canvas = requires { p.sink.base; };
@@ -429,9 +435,7 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
             // In a row band, only a segment whose pixels all lie in it (row_margin).
             const bool in_band = !p.banded || ((a.y < b.y ? a.y : b.y) - row_margin(style) >= int64_t{p.row0} * kSub &&
                                                (a.y < b.y ? b.y : a.y) + row_margin(style) < int64_t{p.row1} * kSub);
-            if (in_band && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
-                static_cast<uint32_t>(a.y) < Hi && static_cast<uint32_t>(b.y) < Hi)
-                return thin_inside(p, a, b);
+            if (in_band && both_on(a, b, Wi, Hi)) return thin_inside(p, a, b);
         }
     }
     // Clip against the canvas grown by 2 px; end points inside it stay exactly as given (and
@@ -520,8 +524,7 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
     for (int i = 0; i + 1 < n; ++i) {
         const SubPoint a = points[i], b = points[i + 1];
         if constexpr (requires { sink.base; }) {
-            if (small && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
-                static_cast<uint32_t>(a.y) < Hi && static_cast<uint32_t>(b.y) < Hi) {
+            if (small && both_on(a, b, Wi, Hi)) {
                 thin_inside(p, a, b);
                 continue;
             }
