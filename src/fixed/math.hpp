@@ -686,6 +686,15 @@ inline bool slerp_sigmas(fixed K, fixed d, int n, int64_t* sigma) noexcept {
     return true;
 }
 
+// E(w) = r / S_K(r) for a point whose 3-vector has w = C_K(r) (tables::equi_q30): its
+// equidistant projection is (x, y) E(w). w in Q16.16 within [0, 32); Q2.30.
+[[gnu::always_inline]] inline int32_t equidistant_ratio_q30(uint32_t w) noexcept {
+    constexpr int s = 16 - tables::kEquiStepBits;
+    const uint32_t i = w >> s, f = w & ((1u << s) - 1);
+    const int32_t* t = tables::equi_q30.data() + i;
+    return t[0] + static_cast<int32_t>((int64_t{t[1] - t[0]} * f) >> s);
+}
+
 // x / d for many x and one d, bit for bit the same as operator/ (detail::Divisor). Found by
 // argument-dependent lookup: geometry code writes `const auto by_d = divisor(d); by_d(x)`.
 struct fixed_divisor {

@@ -80,6 +80,15 @@ constexpr std::array<int32_t, (7 << (kATfLowStepBits - 4)) + 2> atf_low_q29 =
         return cx::ATf(-15.0 / 16 + static_cast<double>(i) / (1 << kATfLowStepBits)) * (q30 / 2);
     });
 
+namespace {
+constexpr double equi(double w) { return 2 * cx::ATf((1 - w) / (1 + w)) / (1 + w); }
+}  // namespace
+
+constexpr std::array<int32_t, (kEquiRange << kEquiStepBits) + 2> equi_q30 =
+    build<int32_t, (kEquiRange << kEquiStepBits) + 2>([](int i) {
+        return equi(static_cast<double>(i) / (1 << kEquiStepBits)) * q30;
+    });
+
 }  // namespace noneuclid::fx::tables
 
 namespace noneuclid::fx::detail {

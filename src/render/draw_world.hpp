@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -144,6 +145,38 @@ inline void fill_span(uint8_t* p, int n, const SpanPattern& pat) {
     for (; rest >= 12; rest -= 12, p += 12) store_word(p, a), store_word(p + 4, b), store_word(p + 8, c);
     fill_tail(p, rest, a, b, c);
 }
+
+// The fixed engine's equidistant view from the 3-vector model straight to sub-pixels, for the
+// draw's inner loop: a point (w, x, y) is shown at (x, y) E(w) (fx::equidistant_ratio_q30: one
+// table lookup, no reciprocal and no ATf) times the screen scale, E(w) and the scale in one
+// product G per point. Its domain is the fast path's (0 <= w < 32, |x|, |y| <= 100, project_vec
+// takes the rest) and a scale below 2^14 px per unit, where every product fits in 64 bits and
+// every result in 32 (|x| E(w) scale < 100 * pi/2 * 2^14 px < 2^21 px).
+struct FixedEquidistant {
+    static constexpr int kG = 25;          // G in Q25 px per unit: below 2^(30.7 + 14 - 5) = 2^39.7
+    static constexpr int kGs = 16 + 30 - kG;  // Q16 scale x Q30 E -> Q25
+    static constexpr int kXs = 16 + kG - kSubBits;  // Q16 x Q25 -> 1/256 px
+    int32_t cx = 0, cy = 0;  // the canvas centre, 1/256 px
+    int64_t scale = 0;       // px per unit, Q16
+    static bool make(const ScreenMap<fx::fixed>& m, FixedEquidistant& e) {
+        const int32_t sc = m.scale.raw();
+        if (sc <= 0 || sc >= (int32_t{1} << 30)) return false;
+        e.cx = m.cx.raw() >> 8, e.cy = m.cy.raw() >> 8, e.scale = sc;
+        return true;
+    }
+    // The point of Q16.16 coordinates held in 64 bits (a slerp's sums, unsaturated); false
+    // outside the domain.
+    [[gnu::always_inline]] bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const {
+        constexpr int64_t big = int64_t{100} << 16;
+        if ((static_cast<uint64_t>(w) & ~((uint64_t{fx::tables::kEquiRange} << 16) - 1)) != 0 ||
+            static_cast<uint64_t>(x + big) > uint64_t{2 * big} ||
+            static_cast<uint64_t>(y + big) > uint64_t{2 * big})
+            return false;
+        const int64_t G = (int64_t{fx::equidistant_ratio_q30(static_cast<uint32_t>(w))} * scale) >> kGs;
+        p = {cx + static_cast<int32_t>((x * G) >> kXs), cy - static_cast<int32_t>((y * G) >> kXs)};
+        return true;
+    }
+};
 }  // namespace detail
 
 // Rows [y0, y1) of the backdrop: the background, the shaded outside of the limit circle. The
@@ -186,6 +219,117 @@ void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOption
     draw_backdrop_rows(c, m, R, o, 0, c.height());
 }
 
+namespace detail {
+// Where a body's screen points stand: entries written, and whether a run of visible points is
+// under way (a hidden point then writes kBreak).
+struct Cursor {
+    std::size_t count = 0;
+    bool open = false;
+};
+// One projected point (X, Y), or a break where it is hidden.
+template <class T>
+Cursor put_point(SubPoint* out, Cursor c, const ScreenMap<T>& m, bool visible, T X, T Y) {
+    if (!visible) {
+        if (c.open) out[c.count++] = kBreak, c.open = false;
+        return c;
+    }
+    out[c.count++] = to_pixels(geo::ScreenPoint<T>{m.cx + m.scale * X, m.cy - m.scale * Y});
+    c.open = true;
+    return c;
+}
+// In fixed_equidistant_points a run is open when the last entry written is a point: the first
+// entry of a body is never a break, and a break is written only after a point.
+inline Cursor cursor_at(const SubPoint* out, const SubPoint* at) {
+    const std::size_t n = static_cast<std::size_t>(at - out);
+    return {n, n > 0 && at[-1].x != kBreak.x};
+}
+// What FixedEquidistant leaves: project_vec, out of the inner loop. Returns where the next
+// entry goes.
+[[gnu::noinline]] inline SubPoint* general_point(fx::fixed K, const ScreenMap<fx::fixed>& m, geo::Vec3<fx::fixed> v,
+                                                 SubPoint* out, SubPoint* at) {
+    const geo::ProjectedPoint<fx::fixed> pp = geo::project_vec(K, v, geo::Projection::azimuthal_equidistant);
+    return out + put_point(out, cursor_at(out, at), m, pp.visible, pp.X, pp.Y).count;
+}
+// The same for the slerp's point a P + b Q, its 3-vector saturated as geo::edge_projected's.
+[[gnu::noinline]] inline SubPoint* general_slerp_point(fx::fixed K, const ScreenMap<fx::fixed>& m, fx::fixed a, fx::fixed b,
+                                                       const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
+                                                       SubPoint* out, SubPoint* at) {
+    return general_point(K, m, {dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}, out, at);
+}
+// An edge whose ends are antipodal on the sphere: walked from its polar end points.
+[[gnu::noinline]] inline SubPoint* antipodal_points(fx::fixed K, const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>& P,
+                                                    const geo::Vec3<fx::fixed>& Q, int level, bool with_start,
+                                                    geo::Polar<fx::fixed>* verts, SubPoint* out, SubPoint* at) {
+    Cursor c = cursor_at(out, at);
+    verts[0] = geo::to_polar(K, P), verts[1] = geo::to_polar(K, Q);
+    geo::edge_projected(K, verts[0], verts[1], P, Q, level, geo::Projection::azimuthal_equidistant, with_start,
+                        [&](int, bool vis, fx::fixed X, fx::fixed Y) { c = put_point(out, c, m, vis, X, Y); });
+    return out + c.count;
+}
+// The slerp's points a P + b Q for the weights [ab, end) of one edge, written from `at` on
+// while FixedEquidistant shows them. Returns where it stopped: the weights of the first point
+// it leaves (or end), and the next entry. A function of its own, so that the loop's values
+// stay in registers.
+struct Run {
+    const fx::fixed* ab;
+    SubPoint* at;
+};
+[[gnu::noinline]] inline Run slerp_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
+                                       const fx::fixed* ab, const fx::fixed* end, SubPoint* at) {
+    const int64_t pw = P.w.raw(), px = P.x.raw(), py = P.y.raw();
+    const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
+    const FixedEquidistant f = fe;
+    for (; ab < end; ab += 2, ++at) {
+        const int64_t a = ab[0].raw(), b = ab[1].raw();
+        // Each product is below 2^62 in magnitude; the sum wraps (defined, in unsigned) only
+        // when all four factors are -2^31, and then leaves the domain.
+        auto sum = [](int64_t p, int64_t q) {
+            return static_cast<int64_t>(static_cast<uint64_t>(p) + static_cast<uint64_t>(q)) >> 16;
+        };
+        if (!f.point(sum(a * pw, b * qw), sum(a * px, b * qx), sum(a * py, b * qy), *at)) break;
+    }
+    return {ab, at};
+}
+// The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
+// and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
+// straight to sub-pixels (FixedEquidistant), general_point for the rest. Returns the count.
+template <class Cache>
+[[gnu::noinline]] std::size_t fixed_equidistant_points(fx::fixed K, const Cache& sh, const FixedEquidistant& fe0,
+                                     const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>* vecs,
+                                     geo::Polar<fx::fixed>* verts, std::size_t n, std::size_t edges, int level,
+                                     SubPoint* out) {
+    using fx::fixed;
+    const FixedEquidistant fe = fe0;
+    SubPoint* at = out;  // the next entry
+    auto vertex = [&](const geo::Vec3<fixed>& v) __attribute__((always_inline)) {
+        if (fe.point(v.w.raw(), v.x.raw(), v.y.raw(), *at))
+            ++at;
+        else
+            at = general_point(K, m, v, out, at);
+    };
+    for (std::size_t e = 0; e < edges; ++e) {
+        const std::size_t f = e + 1 == n ? 0 : e + 1;
+        const geo::Vec3<fixed>&P = vecs[e], &Q = vecs[f];
+        if (sh.antipodal[e]) {
+            at = antipodal_points(K, m, P, Q, level, e == 0, verts, out, at);
+            continue;
+        }
+        if (e == 0) vertex(P);
+        const fixed* ab = sh.weights_of(e);
+        const fixed* const end = ab + 2 * (level - 1);
+        for (;;) {
+            const Run r = slerp_run(fe, P, Q, ab, end, at);
+            at = r.at;
+            if (r.ab >= end) break;
+            at = general_slerp_point(K, m, r.ab[0], r.ab[1], P, Q, out, at);  // a point slerp_run leaves
+            ab = r.ab + 2;
+        }
+        vertex(Q);
+    }
+    return static_cast<std::size_t>(at - out);
+}
+}  // namespace detail
+
 // One body's geometry: its vertices, its edges tessellated at the body's level, projected and
 // mapped to the screen, into out (room for body_point_capacity(b)) as one polyline with kBreak
 // where a point cannot be shown. Returns the number of entries written. Writes only verts,
@@ -223,7 +367,13 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         // is the previous edge's last.
         const world::ShapeCache<T>& sh = world.shape(b);
         const geo::Motion<T> motion = geo::body_motion(world.K, b.centre, b.facing);
-        for (std::size_t i = 0; i < n; ++i) vecs[i] = motion(sh.local[i]);
+        const geo::MotionApply<T> apply(motion);
+        for (std::size_t i = 0; i < n; ++i) vecs[i] = apply(sh.local[i]);
+        if constexpr (std::is_same_v<T, fx::fixed>) {
+            detail::FixedEquidistant fe;
+            if (edges > 0 && o.projection == geo::Projection::azimuthal_equidistant && detail::FixedEquidistant::make(m, fe))
+                return detail::fixed_equidistant_points(world.K, sh, fe, m, vecs, verts, n, edges, level, out);
+        }
         auto emit = [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); };
         if (edges == 0) {
             const geo::ProjectedPoint<T> pp = geo::project_vec(world.K, vecs[0], o.projection);
