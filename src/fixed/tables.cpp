@@ -89,6 +89,11 @@ constexpr std::array<int32_t, (kEquiRange << kEquiStepBits) + 2> equi_q30 =
         return equi(static_cast<double>(i) / (1 << kEquiStepBits)) * q30;
     });
 
+constexpr std::array<int32_t, (1 << (kEquiSouthStepBits - 1)) + 2> equi_south_q29 =
+    build<int32_t, (1 << (kEquiSouthStepBits - 1)) + 2>([](int i) {
+        return equi(-0.5 + static_cast<double>(i) / (1 << kEquiSouthStepBits)) * (q30 / 2);
+    });
+
 }  // namespace noneuclid::fx::tables
 
 namespace noneuclid::fx::detail {

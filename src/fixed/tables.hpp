@@ -81,12 +81,19 @@ extern const std::array<int32_t, (7 << (kATfLowStepBits - 4)) + 2> atf_low_q29;
 inline constexpr int kEquiStepBits = 7;
 inline constexpr int kEquiRange = 32;
 extern const std::array<int32_t, (kEquiRange << kEquiStepBits) + 2> equi_q30;
+// E past the sphere's equator (w < 0, where E grows toward pi/sqrt(1-w^2) at the antipode): on
+// w = -1/2 + i/512, i in [0, 256] (+1 pad) = [-1/2, 0], Q3.29 (E(-1/2) = 2.42). Relative error
+// of the linear interpolation <= 2.7e-6. Below -1/2 (r > 2/3 pi / sqrt K) the polar path is
+// kept: it reads r off the sine, and E's slope there would turn w's rounding into 0.01 px.
+inline constexpr int kEquiSouthStepBits = 9;
+inline constexpr int32_t kEquiSouthRaw = -(1 << 15);  // -1/2 in Q16.16
+extern const std::array<int32_t, (1 << (kEquiSouthStepBits - 1)) + 2> equi_south_q29;
 
 // Total bytes of all tables.
 inline constexpr std::size_t table_bytes =
     sizeof(sin_q30) + sizeof(atan_units) + sizeof(asin_q30) + sizeof(sqrt_q31) +
     sizeof(exp2_q30) + sizeof(recip_q31) + sizeof(log2_q31) + sizeof(sf_q28) + sizeof(cf_q27) + sizeof(asf_q30) +
-    sizeof(atf_q30) + sizeof(atf_low_q29) + sizeof(equi_q30);
+    sizeof(atf_q30) + sizeof(atf_low_q29) + sizeof(equi_q30) + sizeof(equi_south_q29);
 static_assert(table_bytes <= 64 * 1024, "lookup tables must fit in 64 KiB");
 
 }  // namespace noneuclid::fx::tables

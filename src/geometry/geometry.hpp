@@ -349,10 +349,16 @@ struct MotionApply<fixed> {
         if (!small || !below(L.w) || !below(L.x) || !below(L.y)) return M(L);
         const int64_t lw = L.w.raw(), lx = L.x.raw(), ly = L.y.raw();
         auto row = [&](const fixed* m) {
-            const int64_t s = m[0].raw() * lw + m[1].raw() * lx + m[2].raw() * ly;
-            return fixed::from_raw(fx::detail::saturate32(fx::detail::round_shift(s, 16)));
+            return fx::detail::round_shift(m[0].raw() * lw + m[1].raw() * lx + m[2].raw() * ly, 16);
         };
-        return {row(M.m[0]), row(M.m[1]), row(M.m[2])};
+        const int64_t w = row(M.m[0]), x = row(M.m[1]), y = row(M.m[2]);
+        // v + 2^31 is below 2^32 exactly when v fits in 32 bits.
+        auto biased = [](int64_t v) { return static_cast<uint64_t>(v) + (uint64_t{1} << 31); };
+        if (((biased(w) | biased(x) | biased(y)) >> 32) != 0)  // one does not: dot3 saturates it
+            return {fixed::from_raw(fx::detail::saturate32(w)), fixed::from_raw(fx::detail::saturate32(x)),
+                    fixed::from_raw(fx::detail::saturate32(y))};
+        return {fixed::from_raw(static_cast<int32_t>(w)), fixed::from_raw(static_cast<int32_t>(x)),
+                fixed::from_raw(static_cast<int32_t>(y))};
     }
     const Motion<fixed>& M;
     bool small = true;

@@ -508,9 +508,10 @@ TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
 
 // render::detail::FixedEquidistant, one point: the 3-vector (C_K(r), S_K(r) cos t, S_K(r) sin t)
 // rounded to Q16.16 lands within 0.012 px of centre + scale r (cos t, -sin t) computed in double
-// (measured: 0.0094 px; the floor to 1/256 px alone is up to 0.0055 px),
-// for curvatures from the sphere to the hyperbolic plane and two screens; points outside its
-// domain (w < 0, w >= 32, |x| or |y| > 100) are left to the general path.
+// (measured: 0.0094 px; the floor to 1/256 px alone is up to 0.0055 px), for curvatures from
+// the sphere (past its equator too) to the hyperbolic plane and two screens; points outside
+// its domain (w < -1/2, w >= 32, |x| or |y| > 100, or > 16 past the equator) are left to the
+// general path.
 TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
     std::mt19937 rng(5);
     for (const double K : {-1.0, -0.6, -0.05, 0.0, 0.3, 1.0})
@@ -521,16 +522,20 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
             ASSERT_TRUE(render::detail::FixedEquidistant::make(m, fe));
             const double cx = static_cast<double>(m.cx), cy = static_cast<double>(m.cy), scale = static_cast<double>(m.scale);
             double worst = 0;
-            long shown = 0, left = 0;
+            long shown = 0, left = 0, south_points = 0;
             for (int i = 0; i < 100000; ++i) {
-                const double r = (rng() % 100000) / 100000.0 * (K == 0 ? 5.0 : (K > 0 ? 1.7 : 5.0) / std::sqrt(std::fabs(K))),
+                const double r = (rng() % 100000) / 100000.0 * (K == 0 ? 5.0 : (K > 0 ? 2.7 : 5.0) / std::sqrt(std::fabs(K))),
                              t = (rng() % 62832) / 10000.0;
                 const double S = geo::S_K(K, r), C = geo::C_K(K, r);
                 auto q16 = [](double v) { return static_cast<int64_t>(std::llround(v * 65536)); };
                 const int64_t w = q16(C), x = q16(S * std::cos(t)), y = q16(S * std::sin(t));
                 render::SubPoint p;
-                const bool in = w >= 0 && w < (int64_t{32} << 16) && std::llabs(x) <= (int64_t{100} << 16) &&
-                                std::llabs(y) <= (int64_t{100} << 16);
+                const bool north = w >= 0 && w < (int64_t{32} << 16) && std::llabs(x) <= (int64_t{100} << 16) &&
+                                   std::llabs(y) <= (int64_t{100} << 16);
+                const bool south = w >= -(int64_t{1} << 15) && w < 0 && std::llabs(x) <= (int64_t{16} << 16) &&
+                                   std::llabs(y) <= (int64_t{16} << 16);
+                const bool in = north || south;
+                south_points += south;
                 ASSERT_EQ(fe.point(w, x, y, p), in) << K << " r " << r;
                 if (!in) {
                     ++left;
@@ -539,8 +544,11 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
                 ++shown;
                 worst = std::max(worst, std::hypot(p.x / 256.0 - (cx + scale * r * std::cos(t)), p.y / 256.0 - (cy - scale * r * std::sin(t))));
             }
-            std::printf("K %5.2f %dx%d: worst %.4f px over %ld points (%ld left to the general path)\n", K, size.first,
-                        size.second, worst, shown, left);
+            std::printf("K %5.2f %dx%d: worst %.4f px over %ld points (%ld past the equator; %ld left to the general "
+                        "path)\n", K, size.first, size.second, worst, shown, south_points, left);
+            if (K > 0) {
+                EXPECT_GT(south_points, 10000) << K;
+            }
             EXPECT_GT(shown, 50000);
             EXPECT_LE(worst, 0.012) << K;
             if (K != 0) {
@@ -552,8 +560,11 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
 // The whole inner loop (render::detail::fixed_equidistant_points, which body_screen_points
 // takes for the fixed engine's equidistant view) against the general 3-vector path it replaced
 // (the same vertices, geo::edge_projected with project_vec, the generic screen mapping): the
-// same breaks in the same places and every point within 0.02 px, in scenes whose edges leave
-// the fast domain mid-edge (past the sphere's equator) and come back.
+// same breaks in the same places and every point within 0.03 px, in scenes whose edges leave
+// the fast domain mid-edge (below w = -1/2 on the sphere) and come back. The two are different
+// approximations, each within 0.021 px of the double reference (BodyPointsMatchThePolarPath);
+// measured apart by up to 0.021 px (fig17, just past the sphere's equator, where the polar path
+// reads r off the sine and E(w) off the cosine). A misplaced or missing point is pixels away.
 TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
     struct Case {
         const char* scene;
@@ -592,7 +603,7 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
                         geo::edge_projected(w.K, vecs[e], vecs[f], sh.weights_of(e), b.desc->tessellation, o.projection, e == 0, emit);
                         const fixed* ab = sh.weights_of(e);
                         for (int k = 1; k < b.desc->tessellation; ++k, ab += 2)
-                            outside += dot2(ab[0], vecs[e].w, ab[1], vecs[f].w) < fixed(0);
+                            outside += dot2(ab[0], vecs[e].w, ab[1], vecs[f].w) < fixed(-0.5);
                     } else {
                         const auto p = geo::to_polar(w.K, vecs[e]), q = geo::to_polar(w.K, vecs[f]);
                         geo::edge_projected(w.K, p, q, vecs[e], vecs[f], b.desc->tessellation, o.projection, e == 0, emit);
@@ -608,9 +619,9 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
                 }
             }
         }
-        std::printf("%-6s K %4.1f: worst %.4f px from the general path over %ld points; %ld slerp points past the "
-                    "equator\n", c.scene, c.K, worst, points, outside);
-        EXPECT_LE(worst, 0.02) << c.scene << " " << c.K;
+        std::printf("%-6s K %4.1f: worst %.4f px from the general path over %ld points; %ld slerp points below "
+                    "w = -1/2\n", c.scene, c.K, worst, points, outside);
+        EXPECT_LE(worst, 0.03) << c.scene << " " << c.K;
         if (c.K >= 0.8) {
             EXPECT_GT(outside, 100) << c.scene;  // the general path inside an edge was taken
         }

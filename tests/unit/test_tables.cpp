@@ -57,11 +57,13 @@ TEST(Tables, EntriesMatchStdToHalfAStep) {
         return std::atanh(s) / s;
     }, "ATf low");
     expect_table(t::equi_q30, 0x1p30, 4097, [](double i) { return equidistant_ratio(i / 128); }, "E");
+    expect_table(t::equi_south_q29, 0x1p29, 257, [](double i) { return equidistant_ratio(-0.5 + i / 512); }, "E south");
 }
 
-// E(w) = r / S_K(r) for w = C_K(r), through every Q16.16 value of w in [0, 32): the table's
+// E(w) = r / S_K(r) for w = C_K(r), through every Q16.16 value of w in [-1/2, 32): the tables'
 // linear interpolation against std::acos / std::acosh. Worst measured: 7.57e-6 (at w = 1/256,
-// the sphere's equator, where E curves most), 2.03e-6 from w = 1 on (the hyperbolic plane).
+// just inside the sphere's equator, where E curves most on [0, 32)), 2.03e-6 from w = 1 on (the
+// hyperbolic plane); past the equator (its own table, 4 times finer) see the test's output.
 TEST(Tables, EquidistantRatioInterpolatesToTheStatedError) {
     double worst = 0, worst_hyperbolic = 0;
     for (uint32_t w = 0; w < (32u << 16); ++w) {
@@ -70,9 +72,15 @@ TEST(Tables, EquidistantRatioInterpolatesToTheStatedError) {
         worst = std::max(worst, e);
         if (x >= 1) worst_hyperbolic = std::max(worst_hyperbolic, e);
     }
-    std::printf("E(w): worst relative error %.3g, %.3g for w >= 1\n", worst, worst_hyperbolic);
+    double worst_south = 0;  // past the sphere's equator, w in [-1/2, 0)
+    for (int32_t w = -(1 << 15); w < 0; ++w) {
+        const double ref = equidistant_ratio(w / 65536.0);
+        worst_south = std::max(worst_south, std::fabs(noneuclid::fx::equidistant_ratio_south_q29(w) / 0x1p29 - ref) / ref);
+    }
+    std::printf("E(w): worst relative error %.3g, %.3g for w >= 1, %.3g for w < 0\n", worst, worst_hyperbolic, worst_south);
     EXPECT_LE(worst, 7.6e-6);
     EXPECT_LE(worst_hyperbolic, 2.1e-6);
+    EXPECT_LE(worst_south, 2.8e-6);
 }
 
 TEST(Tables, FitTheMemoryBudget) {
