@@ -328,9 +328,10 @@ struct Motion {
     }
 };
 // M(L) for many L, the same bits as M(L). In fixed point, where every entry of M is below 2^14
-// in magnitude (`small`, checked once per body), one check per vertex instead of dot3's three
-// overflow tests per row: entries and coordinates below 2^14 keep each row's sum of products
-// below 3 * 2^60, where dot3 neither overflows nor clamps, and rounds and saturates the same.
+// in magnitude (`small`, checked once per body), without dot3's overflow tests: each product
+// is then below 2^30 2^31 = 2^61 and a row's sum below 3 2^61 < 2^63, so it cannot overflow,
+// and rounding it and saturating to 32 bits gives what dot3 gives (dot3's early clamp at
+// 2^62 - 2^15 clamps what saturation clamps too).
 template <class T>
 struct MotionApply {
     explicit MotionApply(const Motion<T>& m) : M(m) {}
@@ -346,10 +347,12 @@ struct MotionApply<fixed> {
             for (fixed v : row) small = small && below(v);
     }
     [[gnu::always_inline]] Vec3<fixed> operator()(const Vec3<fixed>& L) const {
-        if (!small || !below(L.w) || !below(L.x) || !below(L.y)) return M(L);
-        const int64_t lw = L.w.raw(), lx = L.x.raw(), ly = L.y.raw();
+        if (!small) return M(L);
         auto row = [&](const fixed* m) {
-            return fx::detail::round_shift(m[0].raw() * lw + m[1].raw() * lx + m[2].raw() * ly, 16);
+            int64_t s = (int64_t{1} << 15) + int64_t{m[0].raw()} * L.w.raw();  // rounded to nearest, as dot3
+            s += int64_t{m[1].raw()} * L.x.raw();
+            s += int64_t{m[2].raw()} * L.y.raw();
+            return s >> 16;
         };
         const int64_t w = row(M.m[0]), x = row(M.m[1]), y = row(M.m[2]);
         // v + 2^31 is below 2^32 exactly when v fits in 32 bits.
@@ -555,6 +558,20 @@ ProjectedPoint<T> project_polar(T K, Polar<T> p, Projection proj) {
     if (!pr.visible) return {false, T(0), T(0)};
     return {true, pr.rho * cos(p.theta), pr.rho * sin(p.theta)};
 }
+// The equidistant view of a 3-vector (w, x, y) is (x, y) E(w): a point at distance r has
+// w = C_K(r) and (x, y) = S_K(r) (cos theta, sin theta), and E(w) = r / S_K(r) depends on w
+// alone, whatever K: acos(w) / sqrt(1 - w^2) below 1, acosh(w) / sqrt(w^2 - 1) above, with
+// (1 - w)(1 + w) for 1 - w^2 (no cancellation near w = 1) and its series 1 - d/3 + 2d^2/15 -
+// 2d^3/35 (d = w - 1) within 1e-4 of 1 (where it is exact to 1e-16). Floating point's; fixed
+// point tabulates the same function (fx::equidistant_ratio_q30).
+template <class T>
+T equidistant_ratio(T w) {
+    using std::acos, std::acosh, std::sqrt;
+    const T d = w - T(1);
+    if (d < T(1e-4) && d > T(-1e-4)) return T(1) + d * (T(-1) / T(3) + d * (T(2) / T(15) - d * (T(2) / T(35))));
+    if (d < T(0)) return acos(w) / sqrt(-d * (T(1) + w));
+    return acosh(w) / sqrt(d * (w + T(1)));
+}
 template <class T>
 ProjectedPoint<T> project_vec_general(T K, Vec3<T> v, Projection proj) {
     using std::sqrt;
@@ -564,9 +581,13 @@ ProjectedPoint<T> project_vec_general(T K, Vec3<T> v, Projection proj) {
     T f;
     switch (proj) {
         case Projection::azimuthal_equidistant: {
-            const T g = quotient(T(2), T(1) + v.w);
-            const T s2 = dot2(v.x, v.x, v.y, v.y);
-            f = mul_ATf(g, quarter(K * s2 * g * g));
+            if constexpr (std::is_floating_point_v<T>) {
+                f = equidistant_ratio(v.w);
+            } else {
+                const T g = quotient(T(2), T(1) + v.w);
+                const T s2 = dot2(v.x, v.x, v.y, v.y);
+                f = mul_ATf(g, quarter(K * s2 * g * g));
+            }
             break;
         }
         case Projection::stereographic: f = quotient(T(2), T(1) + v.w); break;
