@@ -303,6 +303,28 @@ struct Run {
     }
     return {ab, at};
 }
+// A body at level 2 (one slerp point per edge: the grid lines), edges [e, edges): each edge's
+// point and end, from `at` on, while FixedEquidistant shows both and no edge is antipodal.
+// Returns the first edge it leaves (or edges) and the next entry.
+struct Level2Run {
+    std::size_t e;
+    SubPoint* at;
+};
+[[gnu::noinline]] inline Level2Run level2_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs,
+                                              const uint8_t* antipodal, const fx::fixed* weights, std::size_t n,
+                                              std::size_t edges, std::size_t e, SubPoint* at) {
+    const FixedEquidistant f = fe;
+    for (; e < edges; ++e, at += 2) {
+        const geo::Vec3<fx::fixed>&P = vecs[e], &Q = vecs[e + 1 == n ? 0 : e + 1];
+        const int64_t a = weights[2 * e].raw(), b = weights[2 * e + 1].raw();
+        const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
+        if (antipodal[e] ||
+            !f.point(slerp_sum(a * P.w.raw(), b * qw), slerp_sum(a * P.x.raw(), b * qx), slerp_sum(a * P.y.raw(), b * qy), at[0]) ||
+            !f.point(qw, qx, qy, at[1]))
+            break;
+    }
+    return {e, at};
+}
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
 // and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
 // straight to sub-pixels (FixedEquidistant), general_point for the rest. Returns the count.
@@ -320,16 +342,21 @@ template <class Cache>
         else
             at = general_point(K, m, v, out, at);
     };
+    if (!sh.antipodal[0]) vertex(vecs[0]);  // else antipodal_points writes it
     for (std::size_t e = 0; e < edges; ++e) {
+        if (level == 2) {  // grid lines: every edge in one call while all is shown
+            const Level2Run r = level2_run(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
+            e = r.e, at = r.at;
+            if (e == edges) break;
+        }
         const std::size_t f = e + 1 == n ? 0 : e + 1;
         const geo::Vec3<fixed>&P = vecs[e], &Q = vecs[f];
         if (sh.antipodal[e]) {
             at = antipodal_points(K, m, P, Q, level, e == 0, verts, out, at);
             continue;
         }
-        if (e == 0) vertex(P);
         const fixed* ab = sh.weights_of(e);
-        if (level == 2) {  // one point (grid lines): no call
+        if (level == 2) {  // its point or its end needs the general path
             const int64_t a = ab[0].raw(), b = ab[1].raw();
             if (fe.point(slerp_sum(a * P.w.raw(), b * Q.w.raw()), slerp_sum(a * P.x.raw(), b * Q.x.raw()),
                          slerp_sum(a * P.y.raw(), b * Q.y.raw()), *at))

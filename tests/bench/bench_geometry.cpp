@@ -6,6 +6,7 @@
 //                              (walk_end, what `dump` exports): ns per vertex (counter ns_per_item)
 //   vectors/<engine>/<scene>   the same vertices as the draw makes them: one matrix per body
 //                              (geo::body_motion) applied to the cached local 3-vectors
+//                              (geo::MotionApply)
 //   points/<engine>/<scene>    every edge tessellated at its body's level (edge_points): ns per
 //                              point produced, polar (r, theta)
 //   screen/<engine>/<scene>    the draw's whole geometry: vertices, edge points, projection and
@@ -62,7 +63,8 @@ void vertices(benchmark::State& st, const char* scene) {
     record<T>(st, "vertices", n);
 }
 
-// The draw's vertices: the body's motion, applied to its cached local 3-vectors (World::shape).
+// The draw's vertices: the body's motion, applied to its cached local 3-vectors (World::shape)
+// as body_screen_points applies it (geo::MotionApply).
 template <class T>
 void vectors(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
@@ -73,7 +75,8 @@ void vectors(benchmark::State& st, const char* scene) {
         for (const auto& b : w.bodies) {
             const world::ShapeCache<T>& sh = w.shape(b);
             const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
-            for (std::size_t i = 0; i < b.local.size(); ++i) buf[i] = m(sh.local[i]);
+            const geo::MotionApply<T> apply(m);
+            for (std::size_t i = 0; i < b.local.size(); ++i) buf[i] = apply(sh.local[i]);
             benchmark::DoNotOptimize(buf.data());
         }
         benchmark::ClobberMemory();

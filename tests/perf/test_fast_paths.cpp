@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "render/draw_world.hpp"
@@ -572,10 +573,32 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
     struct Case {
         const char* scene;
         double K;
-    } cases[] = {{"stress", 1.0}, {"kiosk", 0.8}, {"stress", -1.0}, {"kiosk", -0.6}, {"kiosk", 0.0}, {"fig17", 0.3}};
+    } cases[] = {{"stress", 1.0}, {"kiosk", 0.8}, {"stress", -1.0}, {"kiosk", -0.6},
+                 {"kiosk", 0.0},  {"fig17", 0.3}, {"antipodal", 1.0}};
     for (const Case& c : cases) {
         world::Scene scene;
-        ASSERT_TRUE(world::builtin_scene(c.scene, {40, 6, 5}, scene));
+        if (std::string(c.scene) == "antipodal") {
+            // Bodies with an edge between antipodal points of the unit sphere (local vertices at
+            // rho = pi/2 on opposite sides: antipodal_points walks it) as the first, a middle
+            // and the last edge, open and closed, at level 2 (level2_run) and level 8.
+            const double h = 3.14159265358979323846 / 2;
+            int i = 0;
+            for (const int level : {2, 8})
+                for (const bool closed : {false, true})
+                    for (int first = 0; first < 3; ++first) {
+                        world::SceneBody b;
+                        b.name = "antipodal";
+                        b.tessellation = level, b.closed = closed;
+                        b.r = 0.2 + 0.15 * i, b.theta_deg = 40.0 * i, b.spin_deg = 30, b.speed = 0.2, b.direction_deg = 70;
+                        std::vector<world::SceneBody::Vertex> v = {{0.4, 90}, {0.3, 200}, {0.5, 300}};
+                        v.insert(v.begin() + first, {{h, 10}, {h, 190}});
+                        b.vertices = v;
+                        scene.bodies.push_back(b);
+                        ++i;
+                    }
+        } else {
+            ASSERT_TRUE(world::builtin_scene(c.scene, {40, 6, 5}, scene));
+        }
         scene.curvature = c.K;
         world::World<fixed> w(scene);
         render::DrawScratch<fixed> s;
@@ -584,7 +607,7 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
         std::vector<render::SubPoint> ref(s.points.size());
         std::vector<geo::Vec3<fixed>> vecs(s.vectors.size());
         double worst = 0;
-        long points = 0, outside = 0;
+        long points = 0, outside = 0, antipodal = 0;
         for (int frame = 0; frame < 12; ++frame) {
             w.step(fixed(0.1));
             const auto m = render::ScreenMap<fixed>::of(800, 480, w.R);
@@ -608,6 +631,7 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
                         for (int k = 1; k < b.desc->tessellation; ++k, ab += 2)
                             outside += dot2(ab[0], vecs[e].w, ab[1], vecs[f].w) < fixed(-0.5);
                     } else {
+                        ++antipodal;
                         const auto p = geo::to_polar(w.K, vecs[e]), q = geo::to_polar(w.K, vecs[f]);
                         geo::edge_projected(w.K, p, q, vecs[e], vecs[f], b.desc->tessellation, o.projection, e == 0, emit);
                     }
@@ -627,6 +651,9 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
         EXPECT_LE(worst, 0.03) << c.scene << " " << c.K;
         if (c.K >= 0.8) {
             EXPECT_GT(outside, 100) << c.scene;  // the general path inside an edge was taken
+        }
+        if (std::string(c.scene) == "antipodal") {
+            EXPECT_GE(antipodal, 12 * 12);  // every body's antipodal edge, every frame
         }
     }
 }
