@@ -17,20 +17,8 @@ target=${1:-aarch64}
 scene=${2:-kiosk}
 size=${3:-800x480}
 format=${4:-rgb565}
-case $target in
-    aarch64) arch=aarch64 ;;
-    armhf) arch=arm ;;
-    *) echo "arm-frame-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
-esac
-counter=${ARM_INSNCOUNT:-../shared/tools/arm-insncount/arm-insncount}
-if [ ! -x "$counter" ]; then
-    echo "arm-frame-insncount.sh: $counter not found: check out ../shared beside this repository or set ARM_INSNCOUNT." >&2
-    exit 2
-fi
-build=${BUILD_DIR:-build/$target}
-if [ ! -f "$build/CMakeCache.txt" ]; then cmake --preset "$target" -B "$build" >/dev/null; fi
-cmake --build "$build" --target frame_probe -j 2 >/dev/null
-probe=$build/frame_probe
+tool=arm-frame-insncount.sh
+. tests/bench/frame-probe-setup.sh
 n=${FRAMES:-10}
 
 count() {  # count STAGE ENGINE FRAMES -> instructions

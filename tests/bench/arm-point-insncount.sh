@@ -9,23 +9,11 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 target=${1:-aarch64}
-case $target in
-    aarch64) arch=aarch64 ;;
-    armhf) arch=arm ;;
-    *) echo "arm-point-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
-esac
 shift || true
 curvatures=("$@")
 [ ${#curvatures[@]} -gt 0 ] || curvatures=(-1 -0.6 0 0.5)
-counter=${ARM_INSNCOUNT:-../shared/tools/arm-insncount/arm-insncount}
-if [ ! -x "$counter" ]; then
-    echo "arm-point-insncount.sh: $counter not found: check out ../shared beside this repository or set ARM_INSNCOUNT." >&2
-    exit 2
-fi
-build=${BUILD_DIR:-build/$target}
-if [ ! -f "$build/CMakeCache.txt" ]; then cmake --preset "$target" -B "$build" >/dev/null; fi
-cmake --build "$build" --target frame_probe -j 2 >/dev/null
-probe=$build/frame_probe
+tool=arm-point-insncount.sh
+. tests/bench/frame-probe-setup.sh
 frames=4
 
 count() {  # count ENGINE FRAMES K LEVEL -> instructions
