@@ -689,17 +689,12 @@ inline bool slerp_sigmas(fixed K, fixed d, int n, int64_t* sigma) noexcept {
 // E(w) = r / S_K(r) for a point whose 3-vector has w = C_K(r) (tables::equi_q30): its
 // equidistant projection is (x, y) E(w). w in Q16.16 within [0, 32); Q2.30.
 [[gnu::always_inline]] inline int32_t equidistant_ratio_q30(uint32_t w) noexcept {
-    constexpr int s = 16 - tables::kEquiStepBits;
-    const uint32_t i = w >> s, f = w & ((1u << s) - 1);
-    const int32_t* t = tables::equi_q30.data() + i;
-    return t[0] + static_cast<int32_t>((int64_t{t[1] - t[0]} * f) >> s);
+    return static_cast<int32_t>(detail::lerp_table_raw<tables::kEquiStepBits>(tables::equi_q30, static_cast<int32_t>(w), 0));
 }
 // E(w) past the sphere's equator (tables::equi_south_q29), w in Q16.16 within [-1/2, 0); Q3.29.
 [[gnu::always_inline]] inline int32_t equidistant_ratio_south_q29(int32_t w) noexcept {
-    constexpr int s = 16 - tables::kEquiSouthStepBits;
-    const uint32_t o = static_cast<uint32_t>(w - tables::kEquiSouthRaw), i = o >> s, f = o & ((1u << s) - 1);
-    const int32_t* t = tables::equi_south_q29.data() + i;
-    return t[0] + static_cast<int32_t>((int64_t{t[1] - t[0]} * f) >> s);
+    return static_cast<int32_t>(
+        detail::lerp_table_raw<tables::kEquiSouthStepBits>(tables::equi_south_q29, w, tables::kEquiSouthRaw));
 }
 
 // x / d for many x and one d, bit for bit the same as operator/ (detail::Divisor). Found by
