@@ -356,17 +356,7 @@ template <class Cache>
             at = antipodal_points(K, m, P, Q, level, e == 0, verts, out, at);
             continue;
         }
-        const fixed* ab = sh.weights_of(e);
-        if (level == 2) {  // its point or its end needs the general path
-            const int64_t a = ab[0].raw(), b = ab[1].raw();
-            if (fe.point(slerp_sum(a * P.w.raw(), b * Q.w.raw()), slerp_sum(a * P.x.raw(), b * Q.x.raw()),
-                         slerp_sum(a * P.y.raw(), b * Q.y.raw()), *at))
-                ++at;
-            else
-                at = general_slerp_point(K, m, ab[0], ab[1], P, Q, out, at);
-            vertex(Q);
-            continue;
-        }
+        const fixed* ab = sh.weights_of(e);  // (at level 2, an edge level2_run left)
         const fixed* const end = ab + 2 * (level - 1);
         for (;;) {
             const Run r = slerp_run(fe, P, Q, ab, end, at);
