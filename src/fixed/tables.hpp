@@ -77,13 +77,13 @@ extern const std::array<int32_t, (7 << (kATfLowStepBits - 4)) + 2> atf_low_q29;
 // whatever K: acos(w) / sqrt(1 - w^2) below 1, 1 at 1, acosh(w) / sqrt(w^2 - 1) above
 // (= 2 ATf(u) / (1 + w), u = (1 - w) / (1 + w)). One lookup instead of a reciprocal, a square
 // and ATf. On w = i/128, i in [0, 4096] (+1 pad) = [0, 32] (at K = -1, r <= acosh 32 = 4.16),
-// Q2.30. Relative error of the linear interpolation <= 7.6e-6, at w near 0 (tests/accuracy).
+// Q2.30. Relative error of the linear interpolation <= 7.6e-6, at w near 0 (tests/unit/test_tables.cpp).
 inline constexpr int kEquiStepBits = 7;
 inline constexpr int kEquiRange = 32;
 extern const std::array<int32_t, (kEquiRange << kEquiStepBits) + 2> equi_q30;
 // E past the sphere's equator (w < 0, where E grows toward pi/sqrt(1-w^2) at the antipode): on
 // w = -1/2 + i/512, i in [0, 256] (+1 pad) = [-1/2, 0], Q3.29 (E(-1/2) = 2.42). Relative error
-// of the linear interpolation <= 2.7e-6. Below -1/2 (r > 2/3 pi / sqrt K) the polar path is
+// of the linear interpolation <= 1.8e-6. Below -1/2 (r > 2/3 pi / sqrt K) the polar path is
 // kept: it reads r off the sine, and E's slope there would turn w's rounding into 0.01 px.
 inline constexpr int kEquiSouthStepBits = 9;
 inline constexpr int32_t kEquiSouthRaw = -(1 << 15);  // -1/2 in Q16.16
