@@ -275,23 +275,34 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, bool cut) {
 // Inside: both end points are on the canvas. Then the columns need no cut (their centres lie
 // between the end points), and no pixel needs a check: the line's point at every column centre
 // lies between the end points, so its row is on the canvas too.
-template <bool Inside, int Bpp>
+// Otherwise the pixels written are those in the plotter's rows (the canvas or a row band):
+// along the major axis the columns are cut to them ([umin, umax)), across it each pixel is
+// checked ([vmin, vmax)). For an x-major line in a band that walks every column on the canvas,
+// where thin() cuts them to the band exactly by two divisions: segment() sends it here only
+// when it is short.
+// Band: the line reaches past the plotter's rows (a band's edge); otherwise its rows are the
+// canvas's, or it lies within them.
+template <bool Inside, int Bpp, bool Band = false>
 void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int32_t v1) {
     const CanvasSink<Bpp>& sink = p.sink;
     const int32_t du = u1 - u0, dv = v1 - v0;
     ColumnsOf<int32_t> col = columns<int32_t>(u0, u1);
-    const int32_t vmax = p.swap ? sink.width() : sink.height();
+    const int32_t vmin = Band && !p.swap ? p.row0 : 0, vmax = p.swap ? sink.width() : (Band ? p.row1 : sink.height());
     if constexpr (Inside) {
         if (col.count == 0) return;
     } else {
-        if (!cut_columns<int32_t>(col, 0, p.swap ? sink.height() : sink.width())) return;
+        if (!cut_columns<int32_t>(col, Band && p.swap ? p.row0 : 0,
+                                  p.swap ? (Band ? p.row1 : sink.height()) : sink.width()))
+            return;
     }
     const int32_t adu = du > 0 ? du : -du, sdv = du > 0 ? dv : -dv;  // |du|, sgn dv
     const int32_t A = kSub * adu;
     const int32_t uc = col.first * kSub + kSub / 2;
     // thin()'s N = v0 |du| + (uc - u0) sgn dv, as q A + M with v0 = 256 q + r (0 <= r < 256):
-    // row = q + floor(M / A). M is within a few A (uc lies within a column or, where the cut
-    // moved the first column, a few px of u0), so its division is a 32-bit one.
+    // row = q + floor(M / A). M is mostly within a few A (uc lies within a column of u0, or a
+    // few px from it where the canvas cut moved the first column), and its division a 32-bit
+    // one; where a cut moved it further (a band's edge, far off the canvas) |M| < 2^44, and
+    // the division takes 64 bits.
     const int32_t q = floor_sub<int32_t>(v0), r = v0 - q * kSub;
     const int64_t M = int64_t{r} * adu + int64_t{uc - u0} * sdv;
     int32_t row, rem;
@@ -328,7 +339,7 @@ void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int
         off += major;
         e += inc;
         if (e >= A) e -= A, off += minor, row += drow;
-        if (Inside || static_cast<uint32_t>(row) < static_cast<uint32_t>(vmax)) local.store(off);
+        if (Inside || static_cast<uint32_t>(row - vmin) < static_cast<uint32_t>(vmax - vmin)) local.store(off);
     }
     const int32_t u_last = u + (col.count - 1) * col.step;
     if constexpr (Inside) {
@@ -467,9 +478,13 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
     if constexpr (to_canvas) {
         constexpr int64_t lim = int64_t{1} << 21;  // thin32's bound
         auto fits = [](int64_t c) { return static_cast<uint64_t>(c + lim) <= static_cast<uint64_t>(2 * lim); };
-        if (!cut && fits(u0) && fits(v0) && fits(u1) && fits(v1)) {
+        // Lines past a band's edge too (each is drawn once per band it reaches: they are most of
+        // what a second band costs), unless x-major and longer than kWalk columns.
+        constexpr int64_t kWalk = 64 * kSub;
+        if ((!cut || p.swap || (u1 > u0 ? u1 - u0 : u0 - u1) <= kWalk) && fits(u0) && fits(v0) && fits(u1) && fits(v1)) {
             const auto n = [](int64_t c) { return static_cast<int32_t>(c); };
             // (Inside here only on a canvas over 8192 px, whose lines take the general way.)
+            if (cut) return thin32<false, std::remove_cvref_t<decltype(p.sink)>::bytes, true>(p, n(u0), n(v0), n(u1), n(v1));
             return thin32<false>(p, n(u0), n(v0), n(u1), n(v1));
         }
     }
@@ -493,28 +508,56 @@ SubPoint to_sub_impl(double x, double y) {
     return {conv(x), conv(y)};
 }
 
+// polyline() in a row band less than the canvas: out of line, so that the unbanded loop (the
+// one-thread frame's) compiles as it did without it.
+template <class Sink>
+[[gnu::noinline]] void banded_polyline(Plotter<Sink>& p, const Sink& sink, const SubPoint* points, int n, bool closed,
+                                       LineStyle style) {
+    // Segments that cannot reach the band are passed over here, before any set-up, and thin
+    // ones on a canvas wholly inside it (their pixels too: row_margin) go straight to
+    // thin_inside, as segment() would send them. The bodies that cross a band's edge are
+    // drawn this way by each band they reach: the per-segment set-up is most of what a
+    // second band costs.
+    const int32_t m = row_margin(style);
+    const int64_t lo = int64_t{p.row0} * kSub - m, hi = int64_t{p.row1} * kSub + m;  // reaches: lo <= y < hi
+    auto reaches = [lo, hi](SubPoint a, SubPoint b) {
+        return (a.y >= lo || b.y >= lo) && (a.y < hi || b.y < hi);
+    };
+    bool fast = false;  // thin lines on a canvas of at most 8192 px
+    uint32_t Wi = 0, span = 0;
+    int32_t in_lo = 0;  // within: in_lo <= y < in_lo + span, 0 <= x < Wi
+    if constexpr (requires { sink.base; }) {
+        fast = !style.antialias && style.width <= kSub && sink.width() <= kMaxSide32 && sink.height() <= kMaxSide32;
+        Wi = static_cast<uint32_t>(sink.width()) * kSub;
+        in_lo = p.row0 * kSub + m;
+        const int32_t in_hi = p.row1 * kSub - m;
+        span = in_hi > in_lo ? static_cast<uint32_t>(in_hi - in_lo) : 0;
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        const SubPoint a = points[i], b = points[i + 1];
+        if constexpr (requires { sink.base; }) {
+            if (fast && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
+                static_cast<uint32_t>(a.y) - static_cast<uint32_t>(in_lo) < span &&
+                static_cast<uint32_t>(b.y) - static_cast<uint32_t>(in_lo) < span) {
+                thin_inside(p, a, b);
+                continue;
+            }
+        }
+        if (reaches(a, b)) segment(p, a, b, style);
+    }
+    if (closed && n > 1) {
+        if (reaches(points[n - 1], points[0])) segment(p, points[n - 1], points[0], style);
+    } else {
+        end_point(p, points[n - 1], style);
+    }
+}
+
 template <class Sink>
 void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, LineStyle style, RowRange rows) {
     if (n <= 0) return;
     Plotter<Sink> p(sink, rows);
     if (p.row0 >= p.row1) return;
-    if (p.banded) {
-        // Segments that cannot reach the band are passed over here, before any set-up (segment()
-        // takes the 32-bit paths for those wholly inside it).
-        const int32_t m = row_margin(style);
-        const int64_t lo = int64_t{p.row0} * kSub - m, hi = int64_t{p.row1} * kSub + m;  // reaches: lo <= y < hi
-        auto reaches = [lo, hi](SubPoint a, SubPoint b) {
-            return (a.y >= lo || b.y >= lo) && (a.y < hi || b.y < hi);
-        };
-        for (int i = 0; i + 1 < n; ++i)
-            if (reaches(points[i], points[i + 1])) segment(p, points[i], points[i + 1], style);
-        if (closed && n > 1) {
-            if (reaches(points[n - 1], points[0])) segment(p, points[n - 1], points[0], style);
-        } else {
-            end_point(p, points[n - 1], style);
-        }
-        return;
-    }
+    if (p.banded) return banded_polyline(p, sink, points, n, closed, style);
     bool small = false;  // thin lines on a canvas of at most 8192 px: the segments on it go straight to thin_inside
     uint32_t Wi = 0, Hi = 0;
     if constexpr (requires { sink.base; }) {
