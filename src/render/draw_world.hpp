@@ -527,7 +527,9 @@ struct ParallelScratch {
     std::vector<double> edge;
     bool balance = true;
     struct alignas(64) Busy {
-        double seconds = 0;  // the thread's time in the last frame, waits for other threads left out
+        double seconds = 0;   // the thread's time in the last frame, waits for other threads left out
+        double geometry = 0;  // of which its geometry phase (the bodies' steps included), for benchmarks
+        double waited = 0;    // and the time it waited for another thread's bodies
     };
     std::unique_ptr<Busy[]> busy;
     std::vector<double> smoothed;  // busy time, smoothed over frames
@@ -725,12 +727,16 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                                    inside ? RowRange{} : RowRange{y0, y1});
             }
         };
+        const clock::time_point geometry_done = clock::now();
         if (homes) {  // thread t draws band t, the one whose bodies it did
             draw_band(tid);
-            s.busy[tid].seconds = std::chrono::duration<double>(clock::now() - started - waited).count();
         } else {
             for (int k; (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) draw_band(k);
         }
+        auto seconds = [](clock::duration d) { return std::chrono::duration<double>(d).count(); };
+        auto& mine = s.busy[static_cast<std::size_t>(tid)];
+        mine.seconds = seconds(clock::now() - started - waited);
+        mine.geometry = seconds(geometry_done - started), mine.waited = seconds(waited);
     };
     pool.run(job);
     if (homes && s.balance) {

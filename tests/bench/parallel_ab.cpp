@@ -5,11 +5,14 @@
 // frames in turn of (a) World::step + draw_world on one thread, (b) step_and_draw on a pool of 2
 // with the band edges balanced (the default), (c) the same with equal bands (balance off), and
 // (d) the host's ceiling: the same pool running two whole one-thread frames at once, each on a
-// world and canvas of its own (nothing shared), each variant on its own copies. A burst of noise
-// from the host lands on all four alike. Prints each variant's median and 10th percentile frame
-// in us, the speedups of the medians, the ceiling (2 x (a) / (d): what two cores give this
-// frame's work with no sharing at all, at the time of the run) and where the balance left the
-// edge between the two bands.
+// world and canvas of its own (nothing shared), and (e) step_and_draw on a pool of 1 (the
+// threaded frame's code on one thread, one band), each variant on its own copies. A burst of
+// noise from the host lands on all five alike. Prints each variant's median and 10th percentile
+// frame in us, the speedups of the medians, the ceiling (2 x (a) / (d): what two cores give
+// this frame's work with no sharing at all, at the time of the run) and where the balance left
+// the edge between the two bands; then a second table: the phases of (e) and of (b)'s two
+// threads (ParallelScratch::busy: geometry with the steps, raster with the backdrop, waits
+// for the other thread's bodies), medians over the frames.
 //
 // The ceiling is there because this VM's second core is not always a whole core: within
 // minutes, the same two independent frames took 250 us each (ceiling 1.99) and 366 us each
@@ -18,6 +21,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 #include "render/draw_world.hpp"
@@ -32,11 +36,13 @@ double quantile(std::vector<double> x, double p) {
     return x[static_cast<std::size_t>(p * static_cast<double>(x.size() - 1))];
 }
 
+std::vector<std::string> phase_rows;  // the second table
+
 template <class T>
 void compare(const char* scene_name, int w, int h, render::PixelFormat f, int frames) {
     world::Scene scene;
     world::builtin_scene(scene_name, {}, scene);
-    world::World<T> w0(scene), w1(scene), w2(scene), w3(scene), w4(scene);
+    world::World<T> w0(scene), w1(scene), w2(scene), w3(scene), w4(scene), w5(scene);
     render::DrawScratch<T> serial, alone[2];
     serial.prepare(w0);
     alone[0].prepare(w3), alone[1].prepare(w4);
@@ -45,6 +51,9 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
     balanced.prepare(w1, pool);
     equal.prepare(w2, pool);
     equal.balance = false;
+    render::WorkerPool pool1(1);
+    render::ParallelScratch<T> one;
+    one.prepare(w5, pool1);
     std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
     const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     std::vector<uint8_t> px3(px.size()), px4(px.size());
@@ -57,7 +66,10 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
         own_world[t]->step(dt);
         render::draw_world(*own_canvas[t], *own_world[t], o, alone[t]);
     };
-    std::vector<double> ts, tb, te, ti;
+    std::vector<double> ts, tb, te, ti, t1;
+    // Phases in us: (e)'s geometry and raster, (b)'s per thread geometry, raster and waits.
+    std::vector<double> g1, r1, g[2], r[2], wt[2];
+    auto us = [](double seconds) { return seconds * 1e6; };
     auto timed = [](std::vector<double>& out, auto&& frame) {
         const clk::time_point a = clk::now();
         frame();
@@ -65,18 +77,34 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
     };
     constexpr int kChunk = 50;
     for (int done = 0; done < frames; done += kChunk)
-        for (int v = 0; v < 4; ++v)
+        for (int v = 0; v < 5; ++v)
             for (int i = 0; i < kChunk; ++i) {
                 if (v == 0) timed(ts, [&] { w0.step(dt), render::draw_world(c, w0, o, serial); });
-                if (v == 1) timed(tb, [&] { render::step_and_draw(c, w1, dt, o, balanced, pool); });
+                if (v == 1) {
+                    timed(tb, [&] { render::step_and_draw(c, w1, dt, o, balanced, pool); });
+                    for (int t = 0; t < 2; ++t) {
+                        const auto& b = balanced.busy[static_cast<std::size_t>(t)];
+                        g[t].push_back(us(b.geometry)), r[t].push_back(us(b.seconds - b.geometry)), wt[t].push_back(us(b.waited));
+                    }
+                }
                 if (v == 2) timed(te, [&] { render::step_and_draw(c, w2, dt, o, equal, pool); });
                 if (v == 3) timed(ti, [&] { pool.run(two_alone); });
+                if (v == 4) {
+                    timed(t1, [&] { render::step_and_draw(c, w5, dt, o, one, pool1); });
+                    g1.push_back(us(one.busy[0].geometry)), r1.push_back(us(one.busy[0].seconds - one.busy[0].geometry));
+                }
             }
     const double s = quantile(ts, 0.5), b = quantile(tb, 0.5), e = quantile(te, 0.5), i = quantile(ti, 0.5);
     std::printf("| %s | %dx%d | %s | %.0f (%.0f) | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.1f of %d |\n",
                 scene_name, w, h, sizeof(T) == sizeof(double) ? "double" : "fixed", s, quantile(ts, 0.1), b, quantile(tb, 0.1),
                 s / b, e, quantile(te, 0.1), s / e, i, quantile(ti, 0.1), 2 * s / i,
                 balanced.edge.size() > 1 ? balanced.edge[1] : 0.0, h);
+    char row[400];
+    auto m = [](const std::vector<double>& x) { return quantile(x, 0.5); };
+    std::snprintf(row, sizeof row, "| %s | %dx%d | %s | %.0f | %.1f | %.1f | %.1f / %.1f | %.1f / %.1f | %.1f / %.1f |\n",
+                  scene_name, w, h, sizeof(T) == sizeof(double) ? "double" : "fixed", m(t1), m(g1), m(r1), m(g[0]), m(g[1]),
+                  m(r[0]), m(r[1]), m(wt[0]), m(wt[1]));
+    phase_rows.push_back(row);
 }
 
 }  // namespace
@@ -96,5 +124,9 @@ int main(int argc, char** argv) {
         compare<fx::fixed>(sc, 1920, 1080, render::PixelFormat::xrgb8888(), frames);
         compare<double>(sc, 1920, 1080, render::PixelFormat::xrgb8888(), frames);
     }
+    std::printf("\nphases in us, medians: a pool of 1 (its frame, geometry, raster) and the two threads of a pool of 2 "
+                "(balanced; thread 0 / thread 1)\n\n| scene | display | engine | pool of 1 | geometry | raster | "
+                "geometry, 2 threads | raster, 2 threads | waited |\n|---|---|---|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& row : phase_rows) std::fputs(row.c_str(), stdout);
     return 0;
 }
