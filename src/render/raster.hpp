@@ -23,7 +23,8 @@
 //   exactly the pixels (and, anti-aliased, the same blends in the same order) that the whole
 //   line writes in those rows, and nothing else: clipping still uses the whole canvas, and the
 //   loops start at the band's first column by exact integer arithmetic (no walking from the
-//   line's start) and stop after its last. Threads drawing disjoint bands of one canvas
+//   line's start) and stop after its last; only a thin x-major line of at most 64 px is walked
+//   whole, each pixel checked against the band. Threads drawing disjoint bands of one canvas
 //   (draw_world over a WorkerPool) thus make the same picture as one thread drawing it all.
 #pragma once
 
