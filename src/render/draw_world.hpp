@@ -160,19 +160,29 @@ struct FixedEquidistant {
     static constexpr int kXs = 16 + kG - kSubBits;  // Q16 x Q25 -> 1/256 px
     int32_t cx = 0, cy = 0;  // the canvas centre, 1/256 px
     int64_t scale = 0;       // px per unit, Q16
+    int64_t flat_G = 0;      // G at E = 1: the plane's
     static bool make(const ScreenMap<fx::fixed>& m, FixedEquidistant& e) {
         const int32_t sc = m.scale.raw();
         if (sc <= 0 || sc >= (int32_t{1} << 30)) return false;
         e.cx = m.cx.raw() >> 8, e.cy = m.cy.raw() >> 8, e.scale = sc;
+        e.flat_G = (int64_t{1} << 30) * e.scale >> kGs;
         return true;
     }
     // The point of Q16.16 coordinates held in 64 bits (a slerp's sums, unsaturated); false
-    // outside the domain.
+    // outside the domain. Flat: K = 0, where every point has w = C_0(r) = 1 and E(1) = 1: w is
+    // not looked at (nor, inlined, computed) and G is the same for every point; the domain is
+    // |x|, |y| <= 100.
+    template <bool Flat = false>
     [[gnu::always_inline]] bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const {
         auto within = [&](int64_t lim) {
             return static_cast<uint64_t>(x + lim) <= static_cast<uint64_t>(2 * lim) &&
                    static_cast<uint64_t>(y + lim) <= static_cast<uint64_t>(2 * lim);
         };
+        if constexpr (Flat) {
+            if (!within(int64_t{100} << 16)) return false;
+            p = {cx + static_cast<int32_t>((x * flat_G) >> kXs), cy - static_cast<int32_t>((y * flat_G) >> kXs)};
+            return true;
+        }
         int64_t E;  // Q30
         if (static_cast<uint64_t>(w) < (uint64_t{fx::tables::kEquiRange} << 16)) [[likely]] {
             if (!within(int64_t{100} << 16)) return false;
@@ -292,14 +302,15 @@ struct Run {
     const fx::fixed* ab;
     SubPoint* at;
 };
-[[gnu::noinline]] inline Run slerp_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
-                                       const fx::fixed* ab, const fx::fixed* end, SubPoint* at) {
+template <bool Flat>
+[[gnu::noinline]] Run slerp_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
+                                const fx::fixed* ab, const fx::fixed* end, SubPoint* at) {
     const int64_t pw = P.w.raw(), px = P.x.raw(), py = P.y.raw();
     const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
     const FixedEquidistant f = fe;
     for (; ab < end; ab += 2, ++at) {
         const int64_t a = ab[0].raw(), b = ab[1].raw();
-        if (!f.point(slerp_sum(a * pw, b * qw), slerp_sum(a * px, b * qx), slerp_sum(a * py, b * qy), *at)) break;
+        if (!f.point<Flat>(slerp_sum(a * pw, b * qw), slerp_sum(a * px, b * qx), slerp_sum(a * py, b * qy), *at)) break;
     }
     return {ab, at};
 }
@@ -310,26 +321,27 @@ struct Level2Run {
     std::size_t e;
     SubPoint* at;
 };
-[[gnu::noinline]] inline Level2Run level2_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs,
-                                              const uint8_t* antipodal, const fx::fixed* weights, std::size_t n,
-                                              std::size_t edges, std::size_t e, SubPoint* at) {
+template <bool Flat>
+[[gnu::noinline]] Level2Run level2_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs,
+                                       const uint8_t* antipodal, const fx::fixed* weights, std::size_t n,
+                                       std::size_t edges, std::size_t e, SubPoint* at) {
     const FixedEquidistant f = fe;
     for (; e < edges; ++e, at += 2) {
         const geo::Vec3<fx::fixed>&P = vecs[e], &Q = vecs[e + 1 == n ? 0 : e + 1];
         const int64_t a = weights[2 * e].raw(), b = weights[2 * e + 1].raw();
         const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
         if (antipodal[e]) break;
-        if (!f.point(slerp_sum(a * P.w.raw(), b * qw), slerp_sum(a * P.x.raw(), b * qx),
-                     slerp_sum(a * P.y.raw(), b * qy), at[0]))
+        if (!f.point<Flat>(slerp_sum(a * P.w.raw(), b * qw), slerp_sum(a * P.x.raw(), b * qx),
+                           slerp_sum(a * P.y.raw(), b * qy), at[0]))
             break;
-        if (!f.point(qw, qx, qy, at[1])) break;
+        if (!f.point<Flat>(qw, qx, qy, at[1])) break;
     }
     return {e, at};
 }
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
 // and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
 // straight to sub-pixels (FixedEquidistant), general_point for the rest. Returns the count.
-template <class Cache>
+template <bool Flat, class Cache>
 [[gnu::noinline]] std::size_t fixed_equidistant_points(fx::fixed K, const Cache& sh, const FixedEquidistant& fe0,
                                                        const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>* vecs,
                                                        geo::Polar<fx::fixed>* verts, std::size_t n, std::size_t edges,
@@ -338,7 +350,7 @@ template <class Cache>
     const FixedEquidistant fe = fe0;
     SubPoint* at = out;  // the next entry
     auto vertex = [&](const geo::Vec3<fixed>& v) __attribute__((always_inline)) {
-        if (fe.point(v.w.raw(), v.x.raw(), v.y.raw(), *at))
+        if (fe.point<Flat>(v.w.raw(), v.x.raw(), v.y.raw(), *at))
             ++at;
         else
             at = general_point(K, m, v, out, at);
@@ -346,7 +358,7 @@ template <class Cache>
     if (!sh.antipodal[0]) vertex(vecs[0]);  // else antipodal_points writes it
     for (std::size_t e = 0; e < edges; ++e) {
         if (level == 2) {  // grid lines: every edge in one call while all is shown
-            const Level2Run r = level2_run(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
+            const Level2Run r = level2_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
             e = r.e, at = r.at;
             if (e == edges) break;
         }
@@ -359,7 +371,7 @@ template <class Cache>
         const fixed* ab = sh.weights_of(e);  // (at level 2, an edge level2_run left)
         const fixed* const end = ab + 2 * (level - 1);
         for (;;) {
-            const Run r = slerp_run(fe, P, Q, ab, end, at);
+            const Run r = slerp_run<Flat>(fe, P, Q, ab, end, at);
             at = r.at;
             if (r.ab >= end) break;
             at = general_slerp_point(K, m, r.ab[0], r.ab[1], P, Q, out, at);  // a point slerp_run leaves
@@ -413,7 +425,8 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         if constexpr (std::is_same_v<T, fx::fixed>) {
             detail::FixedEquidistant fe;
             if (edges > 0 && o.projection == geo::Projection::azimuthal_equidistant && detail::FixedEquidistant::make(m, fe))
-                return detail::fixed_equidistant_points(world.K, sh, fe, m, vecs, verts, n, edges, level, out);
+                return world.K.raw() == 0 ? detail::fixed_equidistant_points<true>(world.K, sh, fe, m, vecs, verts, n, edges, level, out)
+                                          : detail::fixed_equidistant_points<false>(world.K, sh, fe, m, vecs, verts, n, edges, level, out);
         }
         auto emit = [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); };
         if (edges == 0) {

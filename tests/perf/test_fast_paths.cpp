@@ -525,8 +525,8 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
             render::detail::FixedEquidistant fe;
             ASSERT_TRUE(render::detail::FixedEquidistant::make(m, fe));
             const double cx = static_cast<double>(m.cx), cy = static_cast<double>(m.cy), scale = static_cast<double>(m.scale);
-            double worst = 0;
-            long shown = 0, left = 0, south_points = 0;
+            double worst = 0, flat_worst = 0;
+            long shown = 0, left = 0, south_points = 0, flat = 0;
             for (int i = 0; i < 100000; ++i) {
                 const double r = (rng() % 100000) / 100000.0 * (K == 0 ? 5.0 : (K > 0 ? 2.7 : 5.0) / std::sqrt(std::fabs(K))),
                              t = (rng() % 62832) / 10000.0;
@@ -547,6 +547,13 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
                 }
                 ++shown;
                 worst = std::max(worst, std::hypot(p.x / 256.0 - (cx + scale * r * std::cos(t)), p.y / 256.0 - (cy - scale * r * std::sin(t))));
+                if (K == 0) {  // the plane's own path (w not looked at, E = 1), within the same bound
+                    render::SubPoint q;
+                    ASSERT_TRUE(fe.point<true>(w, x, y, q)) << r;
+                    flat_worst = std::max(flat_worst, std::hypot(q.x / 256.0 - (cx + scale * r * std::cos(t)),
+                                                                 q.y / 256.0 - (cy - scale * r * std::sin(t))));
+                    ++flat;
+                }
             }
             std::printf("K %5.2f %dx%d: worst %.4f px over %ld points (%ld past the equator; %ld left to the general "
                         "path)\n", K, size.first, size.second, worst, shown, south_points, left);
@@ -557,6 +564,15 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
             EXPECT_LE(worst, 0.012) << K;
             if (K != 0) {
                 EXPECT_GT(left, 0) << K;  // the domain's edge was reached
+            } else {
+                std::printf("K  0.00 %dx%d, the plane's path: worst %.4f px over %ld points\n", size.first, size.second,
+                            flat_worst, flat);
+                EXPECT_EQ(flat, shown);
+                EXPECT_LE(flat_worst, 0.012);
+                // Outside |x|, |y| <= 100 the plane's path refuses too.
+                render::SubPoint q;
+                EXPECT_FALSE(fe.point<true>(int64_t{1} << 16, int64_t{101} << 16, 0, q));
+                EXPECT_FALSE(fe.point<true>(int64_t{1} << 16, 0, -(int64_t{101} << 16), q));
             }
         }
 }
