@@ -275,13 +275,11 @@ void thin(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, bool cut) {
 // Inside: both end points are on the canvas. Then the columns need no cut (their centres lie
 // between the end points), and no pixel needs a check: the line's point at every column centre
 // lies between the end points, so its row is on the canvas too.
-// Otherwise the pixels written are those in the plotter's rows (the canvas or a row band):
-// along the major axis the columns are cut to them ([umin, umax)), across it each pixel is
-// checked ([vmin, vmax)). For an x-major line in a band that walks every column on the canvas,
-// where thin() cuts them to the band exactly by two divisions: segment() sends it here only
-// when it is short.
-// Band: the line reaches past the plotter's rows (a band's edge); otherwise its rows are the
-// canvas's, or it lies within them.
+// Otherwise the columns are cut to the canvas along the major axis and each pixel is checked
+// across it. Band (a line reaching past the plotter's row band): the band's rows instead of the
+// canvas's. A y-major line's columns are then cut to them; an x-major line walks every column
+// on the canvas, each pixel's row checked, where thin() finds the band's columns by two
+// divisions (segment() sends only short x-major lines here).
 template <bool Inside, int Bpp, bool Band = false>
 void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int32_t v1) {
     const CanvasSink<Bpp>& sink = p.sink;
@@ -444,8 +442,9 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         if (thin_line && w <= kMaxSide32 && h <= kMaxSide32) {
             const uint32_t Wi = static_cast<uint32_t>(w) * kSub, Hi = static_cast<uint32_t>(h) * kSub;
             // In a row band, only a segment whose pixels all lie in it (row_margin).
-            const bool in_band = !p.banded || ((a.y < b.y ? a.y : b.y) - row_margin(style) >= int64_t{p.row0} * kSub &&
-                                               (a.y < b.y ? b.y : a.y) + row_margin(style) < int64_t{p.row1} * kSub);
+            // (In 64 bits: a y near the ends of int32 would overflow.)
+            const bool in_band = !p.banded || (int64_t{a.y < b.y ? a.y : b.y} - row_margin(style) >= int64_t{p.row0} * kSub &&
+                                               int64_t{a.y < b.y ? b.y : a.y} + row_margin(style) < int64_t{p.row1} * kSub);
             if (in_band && both_on(a, b, Wi, Hi)) return thin_inside(p, a, b);
         }
     }
@@ -508,8 +507,8 @@ SubPoint to_sub_impl(double x, double y) {
     return {conv(x), conv(y)};
 }
 
-// polyline() in a row band less than the canvas: out of line, so that the unbanded loop (the
-// one-thread frame's) compiles as it did without it.
+// polyline() in a row band less than the canvas (out of line: the unbanded loop, the
+// one-thread frame's, does not carry it).
 template <class Sink>
 [[gnu::noinline]] void banded_polyline(Plotter<Sink>& p, const Sink& sink, const SubPoint* points, int n, bool closed,
                                        LineStyle style) {
