@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <bit>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -160,7 +159,7 @@ struct FixedEquidistant {
     static constexpr int kXs = 16 + kG - kSubBits;  // Q16 x Q25 -> 1/256 px
     int32_t cx = 0, cy = 0;  // the canvas centre, 1/256 px
     int64_t scale = 0;       // px per unit, Q16
-    int64_t flat_G = 0;      // G at E = 1: the plane's
+    int64_t flat_G = 0;      // G at E = 1, the plane's: kept, since scale << 9 per point cost 24 -> 25 aarch64 insns
     static bool make(const ScreenMap<fx::fixed>& m, FixedEquidistant& e) {
         const int32_t sc = m.scale.raw();
         if (sc <= 0 || sc >= (int32_t{1} << 30)) return false;
