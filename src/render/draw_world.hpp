@@ -337,6 +337,36 @@ template <bool Flat>
     }
     return {e, at};
 }
+// Whole edges [e, edges) of a body at any level: each edge's slerp points and its end, from
+// `at` on, while FixedEquidistant shows them all and no edge is antipodal. Returns the first
+// edge it does not finish (or edges) and where that edge's entries begin: an edge it leaves
+// halfway is done again by the caller's per-edge path, whose points are the same bits. One
+// call per body; at level 1 (vertices only) no call per edge at all.
+struct EdgeRun {
+    std::size_t e;
+    SubPoint* at;
+};
+template <bool Flat>
+[[gnu::noinline]] EdgeRun edge_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs, const uint8_t* antipodal,
+                                   const fx::fixed* weights, std::size_t per_edge, std::size_t n, std::size_t edges,
+                                   std::size_t e, SubPoint* at) {
+    const FixedEquidistant f = fe;
+    const fx::fixed* ab = weights + e * per_edge;
+    for (; e < edges; ++e) {
+        if (antipodal[e]) break;
+        const geo::Vec3<fx::fixed>& Q = vecs[e + 1 == n ? 0 : e + 1];
+        SubPoint* p = at;
+        if (per_edge != 0) {  // the edge's own points: slerp_run's loop, which keeps its values in registers
+            const fx::fixed* const end = ab + per_edge;
+            const Run r = slerp_run<Flat>(f, vecs[e], Q, ab, end, at);
+            if (r.ab < end) break;
+            ab = end, p = r.at;
+        }
+        if (!f.point<Flat>(Q.w.raw(), Q.x.raw(), Q.y.raw(), *p)) break;
+        at = p + 1;
+    }
+    return {e, at};
+}
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
 // and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
 // straight to sub-pixels (FixedEquidistant), general_point for the rest. Returns the count.
@@ -359,8 +389,11 @@ template <bool Flat, class Cache>
         if (level == 2) {  // grid lines: every edge in one call while all is shown
             const Level2Run r = level2_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
             e = r.e, at = r.at;
-            if (e == edges) break;
+        } else {  // every edge in one call while all is shown
+            const EdgeRun r = edge_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), sh.per_edge, n, edges, e, at);
+            e = r.e, at = r.at;
         }
+        if (e == edges) break;
         const std::size_t f = e + 1 == n ? 0 : e + 1;
         const geo::Vec3<fixed>&P = vecs[e], &Q = vecs[f];
         if (sh.antipodal[e]) {
@@ -420,7 +453,7 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         const world::ShapeCache<T>& sh = world.shape(b);
         const geo::Motion<T> motion = geo::body_motion(world.K, b.centre, b.facing);
         const geo::MotionApply<T> apply(motion);
-        for (std::size_t i = 0; i < n; ++i) vecs[i] = apply(sh.local[i]);
+        apply(sh.local.data(), vecs, n);
         if constexpr (std::is_same_v<T, fx::fixed>) {
             detail::FixedEquidistant fe;
             if (edges > 0 && o.projection == geo::Projection::azimuthal_equidistant && detail::FixedEquidistant::make(m, fe))

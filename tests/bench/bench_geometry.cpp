@@ -76,7 +76,7 @@ void vectors(benchmark::State& st, const char* scene) {
             const world::ShapeCache<T>& sh = w.shape(b);
             const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
             const geo::MotionApply<T> apply(m);
-            for (std::size_t i = 0; i < b.local.size(); ++i) buf[i] = apply(sh.local[i]);
+            apply(sh.local.data(), buf.data(), b.local.size());
             benchmark::DoNotOptimize(buf.data());
         }
         benchmark::ClobberMemory();

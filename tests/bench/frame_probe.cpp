@@ -1,6 +1,6 @@
 // Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
 // (../shared/tools/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
-//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION]]]
+//     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION [VERTICES]]]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
@@ -25,10 +25,11 @@ using namespace noneuclid;
 
 template <class T>
 int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads,
-        const char* K, int tess) {
+        const char* K, int tess, int verts) {
     world::Scene scene;
     world::SceneParams params;
     if (tess > 0) params.tessellation = tess;  // stress only
+    if (verts > 0) params.vertices = verts;    // stress only
     if (!world::builtin_scene(scene_name, params, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
@@ -98,7 +99,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
 
 int main(int argc, char** argv) {
     if (argc < 7) {
-        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS [K]]\n");
+        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS [K [TESSELLATION [VERTICES]]]]\n");
         return 2;
     }
     int w = 0, h = 0;
@@ -114,10 +115,11 @@ int main(int argc, char** argv) {
     const int threads = argc > 7 ? std::atoi(argv[7]) : 1;
     const char* K = argc > 8 ? argv[8] : nullptr;
     const int tess = argc > 9 ? std::atoi(argv[9]) : 0;
+    const int verts = argc > 10 ? std::atoi(argv[10]) : 0;
     const std::string e = argv[2];
-    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads, K, tess);
-    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads, K, tess);
-    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads, K, tess);
+    if (e == "fixed") return run<fx::fixed>(argv[1], argv[3], w, h, f, n, threads, K, tess, verts);
+    if (e == "double") return run<double>(argv[1], argv[3], w, h, f, n, threads, K, tess, verts);
+    if (e == "float") return run<float>(argv[1], argv[3], w, h, f, n, threads, K, tess, verts);
     std::fprintf(stderr, "frame_probe: engine must be fixed, double or float, not '%s'.\n", argv[2]);
     return 2;
 }
