@@ -233,13 +233,18 @@ inline int32_t asin_q30(uint64_t x_q32) noexcept {
 // Linear interpolation in a table of Q(Frac) values at u = lo + i / 2^StepBits, for a
 // Q16.16 argument u_raw in [lo, lo + (N - 2) / 2^StepBits]; the result is rounded to Q16.16.
 // lerp_table_raw gives the interpolated value in the table's own Q(Frac), unrounded.
-template <int StepBits, std::size_t N>
-inline int64_t lerp_table_raw(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
+// (The pointer form is for loops that hold the table's address in a register.)
+template <int StepBits>
+[[gnu::always_inline]] inline int64_t lerp_table_raw(const int32_t* t, int32_t u_raw, int32_t lo_raw) noexcept {
     constexpr int shift = 16 - StepBits;
     const uint32_t off = static_cast<uint32_t>(u_raw - lo_raw);
     const uint32_t i = off >> shift, f = off & ((1u << shift) - 1);
     const int32_t t0 = t[i], t1 = t[i + 1];
     return t0 + ((int64_t{t1 - t0} * f) >> shift);
+}
+template <int StepBits, std::size_t N>
+inline int64_t lerp_table_raw(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
+    return lerp_table_raw<StepBits>(t.data(), u_raw, lo_raw);
 }
 template <int StepBits, int Frac, std::size_t N>
 inline fixed lerp_table(const std::array<int32_t, N>& t, int32_t u_raw, int32_t lo_raw) noexcept {
@@ -690,6 +695,10 @@ inline bool slerp_sigmas(fixed K, fixed d, int n, int64_t* sigma) noexcept {
 // equidistant projection is (x, y) E(w). w in Q16.16 within [0, 32); Q2.30.
 [[gnu::always_inline]] inline int32_t equidistant_ratio_q30(uint32_t w) noexcept {
     return static_cast<int32_t>(detail::lerp_table_raw<tables::kEquiStepBits>(tables::equi_q30, static_cast<int32_t>(w), 0));
+}
+// The same from tables::equi_q30.data() held by the caller.
+[[gnu::always_inline]] inline int32_t equidistant_ratio_q30(const int32_t* equi_q30, uint32_t w) noexcept {
+    return static_cast<int32_t>(detail::lerp_table_raw<tables::kEquiStepBits>(equi_q30, static_cast<int32_t>(w), 0));
 }
 // E(w) past the sphere's equator (tables::equi_south_q29), w in Q16.16 within [-1/2, 0); Q3.29.
 [[gnu::always_inline]] inline int32_t equidistant_ratio_south_q29(int32_t w) noexcept {

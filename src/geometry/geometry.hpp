@@ -352,36 +352,44 @@ struct MotionApply<fixed> {
     }
     [[gnu::always_inline]] Vec3<fixed> operator()(const Vec3<fixed>& L) const { return small ? fast(L) : M(L); }
     // M(L[i]) for n vertices, the same bits. The test for `small` is out of the loop, and so is
-    // the saturation: the loop keeps each product's 32-bit truncation and ORs together whether
-    // any did not fit, and only then (never, in the scenes) is the loop done again, saturating.
-    // So its body has no branch and vectorises (aarch64: four vertices per pass).
+    // the saturation: the loop keeps each row's 32-bit truncation and ORs together whether any
+    // did not fit, and only then (never, in the scenes) is the loop done again, saturating. So
+    // its body has no branch: three multiply-adds a row (aarch64 smaddl). Where the first row
+    // is (1, 0, 0) (the plane, K = 0, where every w is 1; or a body centred at O) w is L_w,
+    // which is that row's rounded sum exactly, and is copied.
     void operator()(const Vec3<fixed>* L, Vec3<fixed>* out, std::size_t n) const {
         if (!small) {
             for (std::size_t i = 0; i < n; ++i) out[i] = M(L[i]);
             return;
         }
-        uint64_t wide = 0;
-        for (std::size_t i = 0; i < n; ++i) {
-            const Rows r = rows(L[i]);
-            wide |= biased(r.w) | biased(r.x) | biased(r.y);
-            out[i] = {fixed::from_raw(static_cast<int32_t>(r.w)), fixed::from_raw(static_cast<int32_t>(r.x)),
-                      fixed::from_raw(static_cast<int32_t>(r.y))};
-        }
+        const bool w_is_Lw = M.m[0][0].raw() == fixed::one_raw && M.m[0][1].raw() == 0 && M.m[0][2].raw() == 0;
+        const uint64_t wide = w_is_Lw ? batch<true>(L, out, n) : batch<false>(L, out, n);
         if ((wide >> 32) != 0)
             for (std::size_t i = 0; i < n; ++i) out[i] = fast(L[i]);
+    }
+    template <bool WIsLw>
+    [[gnu::always_inline]] uint64_t batch(const Vec3<fixed>* L, Vec3<fixed>* out, std::size_t n) const {
+        const Motion<fixed> m = M;  // a copy, in registers: out[i] could alias M
+        uint64_t wide = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const int64_t x = row(m.m[1], L[i]), y = row(m.m[2], L[i]);
+            const int64_t w = WIsLw ? L[i].w.raw() : row(m.m[0], L[i]);
+            wide |= (WIsLw ? 0 : biased(w)) | biased(x) | biased(y);
+            out[i] = {fixed::from_raw(static_cast<int32_t>(w)), fixed::from_raw(static_cast<int32_t>(x)),
+                      fixed::from_raw(static_cast<int32_t>(y))};
+        }
+        return wide;
+    }
+    [[gnu::always_inline]] static int64_t row(const fixed* m, const Vec3<fixed>& L) {
+        int64_t s = (int64_t{1} << 15) + int64_t{m[0].raw()} * L.w.raw();  // rounded to nearest, as dot3
+        s += int64_t{m[1].raw()} * L.x.raw();
+        s += int64_t{m[2].raw()} * L.y.raw();
+        return s >> 16;
     }
     struct Rows {
         int64_t w, x, y;
     };
-    [[gnu::always_inline]] Rows rows(const Vec3<fixed>& L) const {
-        auto row = [&](const fixed* m) {
-            int64_t s = (int64_t{1} << 15) + int64_t{m[0].raw()} * L.w.raw();  // rounded to nearest, as dot3
-            s += int64_t{m[1].raw()} * L.x.raw();
-            s += int64_t{m[2].raw()} * L.y.raw();
-            return s >> 16;
-        };
-        return {row(M.m[0]), row(M.m[1]), row(M.m[2])};
-    }
+    [[gnu::always_inline]] Rows rows(const Vec3<fixed>& L) const { return {row(M.m[0], L), row(M.m[1], L), row(M.m[2], L)}; }
     // v + 2^31 is below 2^32 exactly when v fits in 32 bits.
     static uint64_t biased(int64_t v) { return static_cast<uint64_t>(v) + (uint64_t{1} << 31); }
     [[gnu::always_inline]] Vec3<fixed> fast(const Vec3<fixed>& L) const {

@@ -160,11 +160,15 @@ struct FixedEquidistant {
     int32_t cx = 0, cy = 0;  // the canvas centre, 1/256 px
     int64_t scale = 0;       // px per unit, Q16
     int64_t flat_G = 0;      // G at E = 1, the plane's: kept, since scale << 9 per point cost 24 -> 25 aarch64 insns
+    // fx::tables::equi_q30's address, as a value: a loop's copy of this struct then keeps it in a
+    // register, where GCC otherwise loads it from the GOT again for every point (2 instructions).
+    const int32_t* equi = nullptr;
     static bool make(const ScreenMap<fx::fixed>& m, FixedEquidistant& e) {
         const int32_t sc = m.scale.raw();
         if (sc <= 0 || sc >= (int32_t{1} << 30)) return false;
         e.cx = m.cx.raw() >> 8, e.cy = m.cy.raw() >> 8, e.scale = sc;
         e.flat_G = (int64_t{1} << 30) * e.scale >> kGs;
+        e.equi = fx::tables::equi_q30.data();
         return true;
     }
     // The point of Q16.16 coordinates held in 64 bits (a slerp's sums, unsaturated); false
@@ -185,7 +189,7 @@ struct FixedEquidistant {
         int64_t E;  // Q30
         if (static_cast<uint64_t>(w) < (uint64_t{fx::tables::kEquiRange} << 16)) [[likely]] {
             if (!within(int64_t{100} << 16)) return false;
-            E = fx::equidistant_ratio_q30(static_cast<uint32_t>(w));
+            E = fx::equidistant_ratio_q30(equi, static_cast<uint32_t>(w));
         } else if (static_cast<uint64_t>(w - fx::tables::kEquiSouthRaw) < uint64_t{-fx::tables::kEquiSouthRaw} &&
                    within(int64_t{16} << 16)) {
             E = int64_t{fx::equidistant_ratio_south_q29(static_cast<int32_t>(w))} * 2;
@@ -341,31 +345,36 @@ template <bool Flat>
 // `at` on, while FixedEquidistant shows them all and no edge is antipodal. Returns the first
 // edge it does not finish (or edges) and where that edge's entries begin: an edge it leaves
 // halfway is done again by the caller's per-edge path, whose points are the same bits. One
-// call per body; at level 1 (vertices only) no call per edge at all.
+// call per body; at level 1 (Points = false: an edge is its end alone) no call per edge at all.
 struct EdgeRun {
     std::size_t e;
     SubPoint* at;
 };
-template <bool Flat>
+template <bool Flat, bool Points>
 [[gnu::noinline]] EdgeRun edge_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs, const uint8_t* antipodal,
                                    const fx::fixed* weights, std::size_t per_edge, std::size_t n, std::size_t edges,
                                    std::size_t e, SubPoint* at) {
     const FixedEquidistant f = fe;
     const fx::fixed* ab = weights + e * per_edge;
-    for (; e < edges; ++e) {
-        if (antipodal[e]) break;
-        const geo::Vec3<fx::fixed>& Q = vecs[e + 1 == n ? 0 : e + 1];
+    // Edge e, ending at Q: false where it stops.
+    auto edge = [&](std::size_t e, const geo::Vec3<fx::fixed>& Q) __attribute__((always_inline)) {
+        if (antipodal[e]) return false;
         SubPoint* p = at;
-        if (per_edge != 0) {  // the edge's own points: slerp_run's loop, which keeps its values in registers
+        if constexpr (Points) {  // the edge's own points: slerp_run's loop, which keeps its values in registers
             const fx::fixed* const end = ab + per_edge;
             const Run r = slerp_run<Flat>(f, vecs[e], Q, ab, end, at);
-            if (r.ab < end) break;
+            if (r.ab < end) return false;
             ab = end, p = r.at;
         }
-        if (!f.point<Flat>(Q.w.raw(), Q.x.raw(), Q.y.raw(), *p)) break;
+        if (!f.point<Flat>(Q.w.raw(), Q.x.raw(), Q.y.raw(), *p)) return false;
         at = p + 1;
-    }
-    return {e, at};
+        return true;
+    };
+    const std::size_t open = edges < n ? edges : n - 1;  // the edges that end at vecs[e + 1]
+    for (; e < open; ++e)
+        if (!edge(e, vecs[e + 1])) return {e, at};
+    if (e < edges && !edge(e, vecs[0])) return {e, at};  // a closed body's last edge
+    return {edges, at};
 }
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
 // and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
@@ -390,7 +399,8 @@ template <bool Flat, class Cache>
             const Level2Run r = level2_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
             e = r.e, at = r.at;
         } else {  // every edge in one call while all is shown
-            const EdgeRun r = edge_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), sh.per_edge, n, edges, e, at);
+            const EdgeRun r = level == 1 ? edge_run<Flat, false>(fe, vecs, sh.antipodal.data(), sh.weights.data(), 0, n, edges, e, at)
+                                         : edge_run<Flat, true>(fe, vecs, sh.antipodal.data(), sh.weights.data(), sh.per_edge, n, edges, e, at);
             e = r.e, at = r.at;
         }
         if (e == edges) break;

@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# Instructions per tessellated point on ARM: the geometry stage of the stress scene drawn at
-# tessellation level 8 and at level 16 (200 bodies x 8 edges: 12,800 more points a frame),
-# the difference divided by 12,800, for the fixed and double engines at the curvatures given.
-# Counted under qemu-user by ../shared/tools/arm-insncount (repeatable, unlike times).
+# Instructions per tessellated point and per vertex on ARM, for the fixed and double engines at
+# the curvatures given, counted under qemu-user by ../shared/tools/arm-insncount (repeatable,
+# unlike times):
+#   per point   the geometry stage of the stress scene (200 bodies x 8 edges) drawn at
+#               tessellation level 16 against level 8: 12,800 more points a frame;
+#   per vertex  the same at level 1 (an edge is its end vertex alone), 16 vertices a body
+#               against 8: 1,600 more vertices (and edges) a frame, each with its motion,
+#               its projection and its edge's set-up.
+# Each is the difference divided by the number of points or vertices added.
 #
 #   tests/bench/arm-point-insncount.sh [aarch64|armhf] [K ...]     default: aarch64 -1 -0.6 0 0.5
 #   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
@@ -16,18 +21,22 @@ tool=arm-point-insncount.sh
 . tests/bench/frame-probe-setup.sh
 frames=4
 
-count() {  # count ENGINE FRAMES K LEVEL -> instructions
-    "$counter" "$arch" "$probe" geometry "$1" stress 800x480 rgb565 "$2" 1 "$3" "$4" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
+count() {  # count ENGINE FRAMES K LEVEL VERTICES -> instructions
+    "$counter" "$arch" "$probe" geometry "$1" stress 800x480 rgb565 "$2" 1 "$3" "$4" "$5" 2>&1 >/dev/null | awk '/^insns:/ {print $2}'
 }
-per_frame() {  # per_frame ENGINE K LEVEL
-    echo $(( ($(count "$1" "$frames" "$2" "$3") - $(count "$1" 0 "$2" "$3")) / frames ))
+per_frame() {  # per_frame ENGINE K LEVEL VERTICES
+    echo $(( ($(count "$1" "$frames" "$2" "$3" "$4") - $(count "$1" 0 "$2" "$3" "$4")) / frames ))
 }
-echo "instructions per tessellated point on $target: stress geometry, level 16 against level 8 (qemu-user)"
+ratio() { awk -v d="$1" -v f="$2" 'BEGIN { printf "%.2f", d / f }'; }
+echo "instructions on $target (qemu-user), stress geometry: per tessellated point (level 16 against 8),"
+echo "per vertex (level 1, 16 vertices a body against 8)"
 echo
-echo "| K | fixed | double | double/fixed |"
-echo "|---|---:|---:|---:|"
+echo "| K | fixed per point | double per point | double/fixed | fixed per vertex | double per vertex | double/fixed |"
+echo "|---|---:|---:|---:|---:|---:|---:|"
 for K in "${curvatures[@]}"; do
-    f=$(( ($(per_frame fixed "$K" 16) - $(per_frame fixed "$K" 8)) / 12800 ))
-    d=$(( ($(per_frame double "$K" 16) - $(per_frame double "$K" 8)) / 12800 ))
-    echo "| $K | $f | $d | $(awk -v d="$d" -v f="$f" 'BEGIN { printf "%.2f", d / f }') |"
+    f=$(( ($(per_frame fixed "$K" 16 8) - $(per_frame fixed "$K" 8 8)) / 12800 ))
+    d=$(( ($(per_frame double "$K" 16 8) - $(per_frame double "$K" 8 8)) / 12800 ))
+    fv=$(( ($(per_frame fixed "$K" 1 16) - $(per_frame fixed "$K" 1 8)) / 1600 ))
+    dv=$(( ($(per_frame double "$K" 1 16) - $(per_frame double "$K" 1 8)) / 1600 ))
+    echo "| $K | $f | $d | $(ratio "$d" "$f") | $fv | $dv | $(ratio "$dv" "$fv") |"
 done

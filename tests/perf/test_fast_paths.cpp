@@ -470,7 +470,8 @@ TEST(FastPaths, BodyPointsMatchThePolarPath) {
 
 // geo::MotionApply<fixed> is M(L) (dot3 per row), bit for bit: on its fast path (entries below
 // 2^14, coordinates anything up to saturated values, sums that saturate) and through its
-// fallback (larger entries), one vertex at a time and in batches.
+// fallback (larger entries), one vertex at a time and in batches (where the first row is
+// (1, 0, 0), as in the plane, w is copied).
 TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
     std::mt19937 rng(21);
     auto value = [&](int bits) {  // |raw| below 2^bits, sometimes exactly at a limit
@@ -480,12 +481,12 @@ TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
         const int32_t m = static_cast<int32_t>(rng() >> (32 - bits));
         return fixed::from_raw(rng() % 2 ? m : -m);
     };
-    long fast = 0, total = 0, clamped = 0, batch_redone = 0;
+    long fast = 0, total = 0, clamped = 0, batch_redone = 0, plane_rows = 0;
     for (int i = 0; i < 20000; ++i) {
         geo::Motion<fixed> M;
         const int bits = 17 + i % 15;  // up to 2^31
-        if (i % 3 == 0) {  // a body's motion, as the draw makes it
-            const double K = -1 + 2 * (rng() % 1000) / 999.0;
+        if (i % 3 == 0) {  // a body's motion, as the draw makes it; every third in the plane (first row (1, 0, 0))
+            const double K = i % 9 == 0 ? 0.0 : -1 + 2 * (rng() % 1000) / 999.0;
             M = geo::body_motion(fixed(K), geo::Polar<fixed>{fixed((rng() % 4000) / 1000.0), fixed((rng() % 6283) / 1000.0)},
                                  fixed((rng() % 6283) / 1000.0));
         } else {
@@ -503,6 +504,7 @@ TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
             L[j] = {value(b), value(b), value(b)};
         }
         apply(L, batch, static_cast<std::size_t>(count));
+        plane_rows += apply.small && M.m[0][0] == fixed(1) && M.m[0][1].raw() == 0 && M.m[0][2].raw() == 0;
         for (int j = 0; j < count; ++j) {
             const geo::Vec3<fixed> got = apply(L[j]), want = M(L[j]);
             ASSERT_EQ(got.w.raw(), want.w.raw()) << i << " " << j;
@@ -523,6 +525,7 @@ TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
     EXPECT_LT(fast, total - total / 10);
     EXPECT_GT(clamped, 100);       // and the fast path saturated
     EXPECT_GT(batch_redone, 100);  // in a batch of several (the batch's second loop)
+    EXPECT_GT(plane_rows, 1000);   // and the batch's loop that copies w
 }
 
 // render::detail::FixedEquidistant, one point: the 3-vector (C_K(r), S_K(r) cos t, S_K(r) sin t)
