@@ -358,7 +358,6 @@ template <bool Flat, bool Points>
     const fx::fixed* ab = weights + e * per_edge;
     // Edge e, ending at Q: false where it stops.
     auto edge = [&](std::size_t e, const geo::Vec3<fx::fixed>& Q) __attribute__((always_inline)) {
-        if (antipodal[e]) return false;
         SubPoint* p = at;
         if constexpr (Points) {  // the edge's own points: slerp_run's loop, which keeps its values in registers
             const fx::fixed* const end = ab + per_edge;
@@ -370,11 +369,14 @@ template <bool Flat, bool Points>
         at = p + 1;
         return true;
     };
-    const std::size_t open = edges < n ? edges : n - 1;  // the edges that end at vecs[e + 1]
+    std::size_t stop = edges;  // the first antipodal edge from e on (antipodal: null if there is none)
+    if (antipodal)
+        for (stop = e; stop < edges && !antipodal[stop];) ++stop;
+    const std::size_t open = std::min(stop, edges < n ? edges : n - 1);  // edges that end at vecs[e + 1]
     for (; e < open; ++e)
         if (!edge(e, vecs[e + 1])) return {e, at};
-    if (e < edges && !edge(e, vecs[0])) return {e, at};  // a closed body's last edge
-    return {edges, at};
+    if (e < stop && e < edges && !edge(e++, vecs[0])) return {e - 1, at};  // a closed body's last edge
+    return {e, at};
 }
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
 // and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
@@ -399,8 +401,9 @@ template <bool Flat, class Cache>
             const Level2Run r = level2_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
             e = r.e, at = r.at;
         } else {  // every edge in one call while all is shown
-            const EdgeRun r = level == 1 ? edge_run<Flat, false>(fe, vecs, sh.antipodal.data(), sh.weights.data(), 0, n, edges, e, at)
-                                         : edge_run<Flat, true>(fe, vecs, sh.antipodal.data(), sh.weights.data(), sh.per_edge, n, edges, e, at);
+            const uint8_t* const antipodal = sh.any_antipodal ? sh.antipodal.data() : nullptr;
+            const EdgeRun r = level == 1 ? edge_run<Flat, false>(fe, vecs, antipodal, sh.weights.data(), 0, n, edges, e, at)
+                                         : edge_run<Flat, true>(fe, vecs, antipodal, sh.weights.data(), sh.per_edge, n, edges, e, at);
             e = r.e, at = r.at;
         }
         if (e == edges) break;

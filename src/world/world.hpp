@@ -67,6 +67,7 @@ struct ShapeCache {
     std::vector<T> cos_phi, sin_phi;
     std::vector<geo::HalfSine<T>> half_sine;
     std::size_t per_edge = 0;  // 2 (level - 1): the weights of one edge
+    bool any_antipodal = false;  // whether any edge is antipodal
     T* weights_of(std::size_t e) { return weights.data() + e * per_edge; }
     const T* weights_of(std::size_t e) const { return weights.data() + e * per_edge; }
 };
@@ -238,11 +239,13 @@ public:
             c.local[i] = {geo::C_K(K, rho), s * c.cos_phi[i], s * c.sin_phi[i]};
             c.root[i] = geo::clamped_root(s);
         }
+        c.any_antipodal = false;
         for (std::size_t e = 0; e < edges; ++e) {
             const std::size_t f = (e + 1) % n;
             // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
             const T d = geo::distance_from(K, b.local[e].r, b.local[f].r, c.root[e], c.root[f], c.half_sine[e]);
             c.antipodal[e] = !geo::slerp_weights(K, d, level, c.weights_of(e));
+            c.any_antipodal = c.any_antipodal || c.antipodal[e];
         }
         c.K = K, c.valid = true;
         return c;

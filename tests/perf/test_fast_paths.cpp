@@ -416,9 +416,12 @@ void shape_is_direct(const char* scene_name, double K0) {
             }
             const int level = b.desc->tessellation;
             using geo::Sf;  // and fx::Sf by ADL
+            bool any = false;
             for (std::size_t e = 0; e < edges; ++e) {
                 const T d = geo::distance(w.K, b.local[e], b.local[(e + 1) % n]);
                 const T sfd = Sf(w.K * d * d);
+                ASSERT_EQ(c.antipodal[e] != 0, geo::antipodal_edge(w.K, d, sfd)) << scene_name << " edge " << e;
+                any = any || c.antipodal[e];
                 geo::SlerpWeights<T> rec;
                 const bool recurrence = rec.prepare(w.K, d, level);
                 for (int k = 1; k < level && !c.antipodal[e]; ++k) {
@@ -430,6 +433,7 @@ void shape_is_direct(const char* scene_name, double K0) {
                     ASSERT_EQ(ab[2 * (k - 1) + 1], bw) << scene_name << " edge " << e << " k " << k;
                 }
             }
+            ASSERT_EQ(c.any_antipodal, any) << scene_name;
         }
         w.press(world::Action::curvature_up);  // K changes: the next shape() refreshes
         w.step(T(0.1));
