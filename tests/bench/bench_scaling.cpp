@@ -5,11 +5,13 @@
 // RGB565, drawn without the backdrop (a constant per frame, measured in bench_breakdown):
 //   geometry  every body's screen points (vertices, edges, projection)
 //   draw      geometry + raster (draw_world, backdrop off)
-// Three sweeps through (s, v, i) = (100, 8, 8): s in 25..400, v in 4..32, i in 1..32. A
-// least-squares fit t = c0 + c_pt (s v i) + c_vx (s v) per engine and stage follows, with the
-// table of every point against the fit, and an SVG plot of us against s v i if --svg is given.
+// Three sweeps through (s, v, i) = (100, 8, 8): s in 25..400, v in 4..32, i in 1..32, and v in
+// 4..32 at i = 1 (vertices alone). A least-squares fit t = c0 + c_b s + c_vx (s v) + c_pt (s v i)
+// per engine and stage follows (per body, per vertex, per tessellated point), with the table of
+// every point against the fit, and an SVG plot of us against s v i if --svg is given.
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -57,26 +59,30 @@ std::string key(const char* e, const char* stage, Point p) {
     return b;
 }
 
-// Least squares for t = c0 + c1 x1 + c2 x2 (3x3 normal equations, Cramer's rule).
-void fit(const std::vector<double>& x1, const std::vector<double>& x2, const std::vector<double>& t, double c[3]) {
-    double A[3][3] = {}, b[3] = {};
-    for (std::size_t k = 0; k < t.size(); ++k) {
-        const double r[3] = {1, x1[k], x2[k]};
-        for (int i = 0; i < 3; ++i) {
-            b[i] += r[i] * t[k];
-            for (int j = 0; j < 3; ++j) A[i][j] += r[i] * r[j];
+// Least squares for t = sum_j c_j x_j (normal equations, Gaussian elimination with partial
+// pivoting; N is 4 here).
+template <int N>
+void fit(const std::vector<std::array<double, N>>& x, const std::vector<double>& t, double c[N]) {
+    double A[N][N + 1] = {};
+    for (std::size_t k = 0; k < t.size(); ++k)
+        for (int i = 0; i < N; ++i) {
+            A[i][N] += x[k][i] * t[k];
+            for (int j = 0; j < N; ++j) A[i][j] += x[k][i] * x[k][j];
+        }
+    for (int col = 0; col < N; ++col) {
+        int piv = col;
+        for (int r = col + 1; r < N; ++r)
+            if (std::fabs(A[r][col]) > std::fabs(A[piv][col])) piv = r;
+        for (int j = 0; j <= N; ++j) std::swap(A[col][j], A[piv][j]);
+        for (int r = col + 1; r < N; ++r) {
+            const double f = A[r][col] / A[col][col];
+            for (int j = col; j <= N; ++j) A[r][j] -= f * A[col][j];
         }
     }
-    auto det = [](double M[3][3]) {
-        return M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
-               M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0]);
-    };
-    const double d = det(A);
-    for (int col = 0; col < 3; ++col) {
-        double M[3][3];
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) M[i][j] = j == col ? b[i] : A[i][j];
-        c[col] = det(M) / d;
+    for (int i = N - 1; i >= 0; --i) {
+        double v = A[i][N];
+        for (int j = i + 1; j < N; ++j) v -= A[i][j] * c[j];
+        c[i] = v / A[i][i];
     }
 }
 
@@ -91,6 +97,7 @@ int main(int argc, char** argv) {
     for (int s : {25, 50, 100, 200, 400}) pts.push_back({s, 8, 8});
     for (int v : {4, 16, 32}) pts.push_back({100, v, 8});
     for (int i : {1, 2, 4, 16, 32}) pts.push_back({100, 8, i});
+    for (int v : {4, 16, 32}) pts.push_back({100, v, 1});  // vertices alone: an edge is its end
     for (const char* e : {"fixed", "double"})
         for (const char* stage : {"geometry", "draw"})
             for (Point p : pts) {
@@ -105,34 +112,72 @@ int main(int argc, char** argv) {
     });
     benchmark::RunSpecifiedBenchmarks(&rep);
 
-    std::printf("\nfit: us = c0 + c_pt * (s v i) + c_vx * (s v)   (ns per tessellated point, per vertex)\n\n");
-    std::printf("| engine | stage | c0 us | ns per point | ns per vertex | max |residual| |\n|---|---|---:|---:|---:|---:|\n");
+    std::printf("\nfit: us = c0 + c_b * s + c_vx * (s v) + c_pt * (s v i)   (ns per body, per vertex, per tessellated "
+                "point; a vertex is also one of its edge's i points, so one more vertex at level 1 costs c_vx + c_pt)\n\n");
+    std::printf("| engine | stage | c0 us | ns per body | ns per vertex | ns per point | ns per vertex at level 1 | max |residual| |\n"
+                "|---|---|---:|---:|---:|---:|---:|---:|\n");
     struct Series {
         std::string name;
         std::vector<double> x, t, f;
     };
     std::vector<Series> series;
+    std::map<std::string, std::array<double, 4>> coef;
     for (const char* e : {"fixed", "double"})
         for (const char* stage : {"geometry", "draw"}) {
-            std::vector<double> x1, x2, t;
+            std::vector<std::array<double, 4>> x;
+            std::vector<double> svi, t;
             for (Point p : pts) {
                 auto it = g_us.find(key(e, stage, p));
                 if (it == g_us.end()) continue;
-                x1.push_back(static_cast<double>(p.s) * p.v * p.i), x2.push_back(static_cast<double>(p.s) * p.v), t.push_back(it->second);
+                const double sv = static_cast<double>(p.s) * p.v;
+                x.push_back({1.0, static_cast<double>(p.s), sv, sv * p.i});
+                svi.push_back(sv * p.i), t.push_back(it->second);
             }
-            if (t.size() < 4) continue;
-            double c[3];
-            fit(x1, x2, t, c);
+            if (t.size() < 6) continue;
+            double c[4];
+            fit<4>(x, t, c);
             double worst = 0;
-            Series sr{std::string(e) + " " + stage, x1, t, {}};
+            Series sr{std::string(e) + " " + stage, svi, t, {}};
             for (std::size_t k = 0; k < t.size(); ++k) {
-                const double f = c[0] + c[1] * x1[k] + c[2] * x2[k];
+                const double f = c[0] + c[1] * x[k][1] + c[2] * x[k][2] + c[3] * x[k][3];
                 sr.f.push_back(f);
                 worst = std::fmax(worst, std::fabs(t[k] - f) / t[k]);
             }
             series.push_back(sr);
-            std::printf("| %s | %s | %.1f | %.1f | %.1f | %.0f%% |\n", e, stage, c[0], c[1] * 1000, c[2] * 1000, worst * 100);
+            coef[std::string(e) + " " + stage] = {c[0], c[1], c[2], c[3]};
+            std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f%% |\n", e, stage, c[0], c[1] * 1000, c[2] * 1000,
+                        c[3] * 1000, (c[2] + c[3]) * 1000, worst * 100);
         }
+    // One more vertex at level 1, straight from the v sweep at i = 1 (the slope of us over s v,
+    // least squares): the same quantity as the fit's c_vx + c_pt, from those four runs alone.
+    std::map<std::string, double> level1;
+    for (const char* e : {"fixed", "double"})
+        for (const char* stage : {"geometry", "draw"}) {
+            std::vector<std::array<double, 2>> x;
+            std::vector<double> t;
+            for (Point p : pts) {
+                auto it = g_us.find(key(e, stage, p));
+                if (p.i != 1 || p.s != 100 || it == g_us.end()) continue;
+                x.push_back({1.0, static_cast<double>(p.s) * p.v}), t.push_back(it->second);
+            }
+            if (t.size() < 3) continue;
+            double c[2];
+            fit<2>(x, t, c);
+            level1[std::string(e) + " " + stage] = c[1] * 1000;
+        }
+    for (const char* stage : {"geometry", "draw"}) {
+        const std::string fk = std::string("fixed ") + stage, dk = std::string("double ") + stage;
+        std::printf("\n%s, double / fixed:", stage);
+        if (coef.count(fk) && coef.count(dk)) {
+            const auto &cf = coef[fk], &cd = coef[dk];
+            std::printf(" %.2f per body, %.2f per tessellated point, %.2f per vertex at level 1;", cd[1] / cf[1], cd[3] / cf[3],
+                        (cd[2] + cd[3]) / (cf[2] + cf[3]));
+        }
+        if (level1.count(fk) && level1.count(dk))
+            std::printf(" per vertex at level 1 from the i = 1 runs alone: %.1f ns fixed, %.1f double, %.2f", level1[fk],
+                        level1[dk], level1[dk] / level1[fk]);
+    }
+    std::printf("\n");
     std::printf("\n| s | v | i | s v i |");
     for (const Series& sr : series) std::printf(" %s us (fit) |", sr.name.c_str());
     std::printf("\n|---:|---:|---:|---:|");
