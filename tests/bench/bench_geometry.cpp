@@ -6,7 +6,10 @@
 //                              (walk_end, what `dump` exports): ns per vertex (counter ns_per_item)
 //   vectors/<engine>/<scene>   the same vertices as the draw makes them: one matrix per body
 //                              (geo::body_motion) applied to the cached local 3-vectors
-//                              (geo::MotionApply)
+//                              (geo::MotionApply): ns per vertex, the motion included
+//   motion/<engine>/<scene>    the matrix alone (geo::body_motion): ns per body
+//   apply/<engine>/<scene>     its nine products alone (geo::MotionApply, matrices made once):
+//                              ns per vertex
 //   points/<engine>/<scene>    every edge tessellated at its body's level (edge_points): ns per
 //                              point produced, polar (r, theta)
 //   screen/<engine>/<scene>    the draw's whole geometry: vertices, edge points, projection and
@@ -84,6 +87,38 @@ void vectors(benchmark::State& st, const char* scene) {
     record<T>(st, "vectors", n);
 }
 
+// The two halves of `vectors`: each body's matrix, and the matrices applied to the vertices.
+template <class T>
+void motion(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    std::vector<geo::Motion<T>> buf(w.bodies.size());
+    for (auto _ : st) {
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            buf[i] = geo::body_motion(w.K, w.bodies[i].centre, w.bodies[i].facing);
+        benchmark::DoNotOptimize(buf.data());
+        benchmark::ClobberMemory();
+    }
+    record<T>(st, "motion", static_cast<double>(w.bodies.size()));
+}
+template <class T>
+void apply(benchmark::State& st, const char* scene) {
+    const world::World<T> w = make_world<T>(scene);
+    std::vector<geo::Motion<T>> ms;
+    for (const auto& b : w.bodies) ms.push_back(geo::body_motion(w.K, b.centre, b.facing));
+    std::vector<geo::Vec3<T>> buf(4096);
+    double n = 0;
+    for (const auto& b : w.bodies) n += static_cast<double>(b.local.size());
+    for (auto _ : st) {
+        for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+            const geo::MotionApply<T> a(ms[i]);
+            a(w.shape(w.bodies[i]).local.data(), buf.data(), w.bodies[i].local.size());
+            benchmark::DoNotOptimize(buf.data());
+        }
+        benchmark::ClobberMemory();
+    }
+    record<T>(st, "apply", n);
+}
+
 template <class T>
 void points(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
@@ -149,6 +184,8 @@ int main(int argc, char** argv) {
             const std::string e = engine_name<T>();
             benchmark::RegisterBenchmark(("vertices/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { vertices<T>(s, sc); });
             benchmark::RegisterBenchmark(("vectors/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { vectors<T>(s, sc); });
+            benchmark::RegisterBenchmark(("motion/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { motion<T>(s, sc); });
+            benchmark::RegisterBenchmark(("apply/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { apply<T>(s, sc); });
             benchmark::RegisterBenchmark(("points/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { points<T>(s, sc); });
             benchmark::RegisterBenchmark(("screen/" + e + "/" + sc).c_str(), [sc](benchmark::State& s) { screen<T>(s, sc); });
         };
@@ -161,9 +198,9 @@ int main(int argc, char** argv) {
         if (it != r.counters.end()) keep_fastest(g_ns, name, it->second.value * 1e9);
     });
     benchmark::RunSpecifiedBenchmarks(&rep);
-    std::printf("\nns per item (vertex or point); ratio > 1: fixed is faster\n\n");
+    std::printf("\nns per item (vertex, body or point); ratio > 1: fixed is faster\n\n");
     std::printf("| stage | scene | fixed ns | float ns | double ns | double/fixed | float/fixed |\n|---|---|---:|---:|---:|---:|---:|\n");
-    for (const char* stage : {"vertices", "vectors", "points", "screen"})
+    for (const char* stage : {"vertices", "vectors", "motion", "apply", "points", "screen"})
         for (const char* sc : scenes) {
             auto get = [&](const char* e) {
                 auto it = g_ns.find(std::string(stage) + "/" + e + "/" + sc);
