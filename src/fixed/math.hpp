@@ -693,12 +693,12 @@ inline bool slerp_sigmas(fixed K, fixed d, int n, int64_t* sigma) noexcept {
 
 // E(w) = r / S_K(r) for a point whose 3-vector has w = C_K(r) (tables::equi_q30): its
 // equidistant projection is (x, y) E(w). w in Q16.16 within [0, 32); Q2.30.
-[[gnu::always_inline]] inline int32_t equidistant_ratio_q30(uint32_t w) noexcept {
-    return static_cast<int32_t>(detail::lerp_table_raw<tables::kEquiStepBits>(tables::equi_q30, static_cast<int32_t>(w), 0));
-}
-// The same from tables::equi_q30.data() held by the caller.
+// (equi_q30: tables::equi_q30.data(), for a caller that holds it in a register.)
 [[gnu::always_inline]] inline int32_t equidistant_ratio_q30(const int32_t* equi_q30, uint32_t w) noexcept {
     return static_cast<int32_t>(detail::lerp_table_raw<tables::kEquiStepBits>(equi_q30, static_cast<int32_t>(w), 0));
+}
+[[gnu::always_inline]] inline int32_t equidistant_ratio_q30(uint32_t w) noexcept {
+    return equidistant_ratio_q30(tables::equi_q30.data(), w);
 }
 // E(w) past the sphere's equator (tables::equi_south_q29), w in Q16.16 within [-1/2, 0); Q3.29.
 [[gnu::always_inline]] inline int32_t equidistant_ratio_south_q29(int32_t w) noexcept {

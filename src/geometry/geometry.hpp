@@ -386,14 +386,10 @@ struct MotionApply<fixed> {
         s += int64_t{m[2].raw()} * L.y.raw();
         return s >> 16;
     }
-    struct Rows {
-        int64_t w, x, y;
-    };
-    [[gnu::always_inline]] Rows rows(const Vec3<fixed>& L) const { return {row(M.m[0], L), row(M.m[1], L), row(M.m[2], L)}; }
     // v + 2^31 is below 2^32 exactly when v fits in 32 bits.
     static uint64_t biased(int64_t v) { return static_cast<uint64_t>(v) + (uint64_t{1} << 31); }
     [[gnu::always_inline]] Vec3<fixed> fast(const Vec3<fixed>& L) const {
-        const auto [w, x, y] = rows(L);
+        const int64_t w = row(M.m[0], L), x = row(M.m[1], L), y = row(M.m[2], L);
         if (((biased(w) | biased(x) | biased(y)) >> 32) != 0)  // one does not: dot3 saturates it
             return {fixed::from_raw(fx::detail::saturate32(w)), fixed::from_raw(fx::detail::saturate32(x)),
                     fixed::from_raw(fx::detail::saturate32(y))};

@@ -375,7 +375,10 @@ template <bool Flat, bool Points>
     const std::size_t open = std::min(stop, edges < n ? edges : n - 1);  // edges that end at vecs[e + 1]
     for (; e < open; ++e)
         if (!edge(e, vecs[e + 1])) return {e, at};
-    if (e < stop && e < edges && !edge(e++, vecs[0])) return {e - 1, at};  // a closed body's last edge
+    if (e < stop && e < edges) {  // a closed body's last edge, which ends at vecs[0]
+        if (!edge(e, vecs[0])) return {e, at};
+        ++e;
+    }
     return {e, at};
 }
 // The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
