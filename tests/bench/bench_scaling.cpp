@@ -60,7 +60,7 @@ std::string key(const char* e, const char* stage, Point p) {
 }
 
 // Least squares for t = sum_j c_j x_j (normal equations, Gaussian elimination with partial
-// pivoting; N is 4 here).
+// pivoting): N = 4 for the fit, 2 for the slope of the i = 1 runs.
 template <int N>
 void fit(const std::vector<std::array<double, N>>& x, const std::vector<double>& t, double c[N]) {
     double A[N][N + 1] = {};
