@@ -654,6 +654,25 @@ inline void balance_bands(std::vector<double>& edge, const double* busy, std::ve
     }
 }
 
+// The smallest and largest y of n screen points, breaks (kBreak) left out: {INT32_MAX,
+// INT32_MIN} when there is no point. Both are maxima: the top is minus the largest -y, and a
+// break's y, INT32_MIN, is its own negative (mod 2^32), the least of both, so no point needs a
+// test and the loop vectorises (SSE2, NEON). A scalar loop with the break test was 4% of the
+// threaded frame's instructions (x86, stress, 800x480, fixed). Points' y lie within +-2^30
+// (to_sub, equidistant's clamp), so negating one does not wrap.
+struct RowSpan {
+    int32_t top, bottom;
+};
+inline RowSpan row_span(const SubPoint* pts, std::size_t n) {
+    static_assert(kBreak.y == INT32_MIN);
+    int32_t up = INT32_MIN, down = INT32_MIN;  // the largest -y and y
+    for (std::size_t k = 0; k < n; ++k) {
+        const int32_t y = pts[k].y;
+        up = std::max(up, static_cast<int32_t>(0u - static_cast<uint32_t>(y))), down = std::max(down, y);
+    }
+    return {up == INT32_MIN ? INT32_MAX : -up, down};
+}
+
 namespace detail {
 // The threaded frame (draw_world and step_and_draw below): before(i) is called for body i on
 // the thread that claimed it, just before its geometry.
@@ -740,11 +759,8 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
             const auto& b = world.bodies[idx];
             SubPoint* pts = arena;
             const std::size_t n = (b.desc->grid ? !o.grids : !o.bodies) ? 0 : body_screen_points(world, b, m, o, verts, vecs, pts);
-            int32_t top = INT32_MAX, bottom = INT32_MIN;  // over the points; a break's y (INT32_MIN) is no point's
-            for (std::size_t k = 0; k < n; ++k) {
-                const int32_t y = pts[k].y;
-                top = std::min(top, y == kBreak.y ? INT32_MAX : y), bottom = std::max(bottom, y);
-            }
+            const RowSpan span = row_span(pts, n);
+            const int32_t top = span.top, bottom = span.bottom;
             if (homes) {  // next frame's home: the band of the points' middle row
                 uint8_t h = s.home[gen & 1][idx];
                 if (top <= bottom) {

@@ -6,6 +6,8 @@
 // the same state, bit for bit, as World::step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
@@ -162,6 +164,42 @@ TEST(Parallel, BalanceBandsMovesEdgesTowardsTheBusierBand) {
     const double same[] = {5e-5, 5e-5};
     render::balance_bands(flat, same, sf);
     EXPECT_DOUBLE_EQ(flat[1], 70);
+}
+
+// row_span (the rows a body's points span, for the bands) against its definition: the least
+// and the greatest y over the points that are not breaks, {INT32_MAX, INT32_MIN} when there is
+// none. Points anywhere in to_sub's range (+-2^30), breaks anywhere among them, every length
+// from 0 (the vectorised loop's remainders).
+TEST(Parallel, RowSpanIsTheLeastAndGreatestYWithoutBreaks) {
+    uint32_t x = 12345u;
+    auto next = [&x] { return x ^= x << 13, x ^= x >> 17, x ^= x << 5; };
+    std::vector<render::SubPoint> pts;
+    int cases = 0, all_breaks = 0;
+    for (int n = 0; n <= 40; ++n)
+        for (int rep = 0; rep < 200; ++rep) {
+            pts.resize(static_cast<std::size_t>(n));
+            const uint32_t break_odds = next() % 4;  // none, 1 in 2, 1 in 8, all
+            for (auto& p : pts) {
+                const bool brk = break_odds == 3 || (break_odds == 1 && next() % 2 == 0) || (break_odds == 2 && next() % 8 == 0);
+                const int32_t y = static_cast<int32_t>(next() % (2u << 30)) - (1 << 30);  // [-2^30, 2^30)
+                p = brk ? render::kBreak : render::SubPoint{static_cast<int32_t>(next() % 1000), rep % 5 == 0 ? y / 4096 : y};
+            }
+            int32_t top = INT32_MAX, bottom = INT32_MIN;
+            for (const auto& p : pts)
+                if (!(p.x == render::kBreak.x && p.y == render::kBreak.y)) top = std::min(top, p.y), bottom = std::max(bottom, p.y);
+            all_breaks += top == INT32_MAX;
+            const render::RowSpan s = render::row_span(pts.data(), pts.size());
+            ASSERT_EQ(s.top, top) << "n " << n << " rep " << rep;
+            ASSERT_EQ(s.bottom, bottom) << "n " << n << " rep " << rep;
+            ++cases;
+        }
+    // The ends of the range too.
+    const render::SubPoint ends[] = {{0, -(1 << 30)}, render::kBreak, {0, (1 << 30)}};
+    const render::RowSpan e = render::row_span(ends, 3);
+    EXPECT_EQ(e.top, -(1 << 30));
+    EXPECT_EQ(e.bottom, 1 << 30);
+    EXPECT_GT(all_breaks, 1000);  // the "no point" answer was checked, often
+    EXPECT_EQ(cases, 41 * 200);
 }
 
 // step_and_draw: the world's bits and the pixels as World::step then draw_world on one thread,
