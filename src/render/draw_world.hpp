@@ -658,8 +658,8 @@ inline void balance_bands(std::vector<double>& edge, const double* busy, std::ve
 // INT32_MIN} when there is no point. Both are maxima: the top is minus the largest -y, and a
 // break's y, INT32_MIN, is its own negative (mod 2^32), the least of both, so no point needs a
 // test and the loop vectorises (SSE2, NEON). A scalar loop with the break test was 4% of the
-// threaded frame's instructions (x86, stress, 800x480, fixed). Points' y lie within +-2^30
-// (to_sub, equidistant's clamp), so negating one does not wrap.
+// threaded frame's instructions (x86, stress, 800x480, fixed). Negating any other y does not
+// wrap. (A y of INT32_MIN is taken for a break whatever its x, as the bands always took it.)
 struct RowSpan {
     int32_t top, bottom;
 };

@@ -168,8 +168,9 @@ TEST(Parallel, BalanceBandsMovesEdgesTowardsTheBusierBand) {
 
 // row_span (the rows a body's points span, for the bands) against its definition: the least
 // and the greatest y over the points that are not breaks, {INT32_MAX, INT32_MIN} when there is
-// none. Points anywhere in to_sub's range (+-2^30), breaks anywhere among them, every length
-// from 0 (the vectorised loop's remainders).
+// none. Points anywhere in to_sub's range (+-2^30) and beyond, to the ends of int32 (but not
+// INT32_MIN: that y is a break's), breaks anywhere among them, every length from 0 (the
+// vectorised loop's remainders).
 TEST(Parallel, RowSpanIsTheLeastAndGreatestYWithoutBreaks) {
     uint32_t x = 12345u;
     auto next = [&x] { return x ^= x << 13, x ^= x >> 17, x ^= x << 5; };
@@ -182,7 +183,10 @@ TEST(Parallel, RowSpanIsTheLeastAndGreatestYWithoutBreaks) {
             for (auto& p : pts) {
                 const bool brk = break_odds == 3 || (break_odds == 1 && next() % 2 == 0) || (break_odds == 2 && next() % 8 == 0);
                 const int32_t y = static_cast<int32_t>(next() % (2u << 30)) - (1 << 30);  // [-2^30, 2^30)
-                p = brk ? render::kBreak : render::SubPoint{static_cast<int32_t>(next() % 1000), rep % 5 == 0 ? y / 4096 : y};
+                const uint32_t u = next();
+                const int32_t any = static_cast<int32_t>(u == 0x80000000u ? 0u : u);  // any int32 but INT32_MIN
+                p = brk ? render::kBreak
+                        : render::SubPoint{static_cast<int32_t>(next() % 1000), rep % 5 == 0 ? y / 4096 : (rep % 5 == 1 ? any : y)};
             }
             int32_t top = INT32_MAX, bottom = INT32_MIN;
             for (const auto& p : pts)
@@ -194,10 +198,10 @@ TEST(Parallel, RowSpanIsTheLeastAndGreatestYWithoutBreaks) {
             ++cases;
         }
     // The ends of the range too.
-    const render::SubPoint ends[] = {{0, -(1 << 30)}, render::kBreak, {0, (1 << 30)}};
+    const render::SubPoint ends[] = {{0, INT32_MIN + 1}, render::kBreak, {0, INT32_MAX}};
     const render::RowSpan e = render::row_span(ends, 3);
-    EXPECT_EQ(e.top, -(1 << 30));
-    EXPECT_EQ(e.bottom, 1 << 30);
+    EXPECT_EQ(e.top, INT32_MIN + 1);
+    EXPECT_EQ(e.bottom, INT32_MAX);
     EXPECT_GT(all_breaks, 1000);  // the "no point" answer was checked, often
     EXPECT_EQ(cases, 41 * 200);
 }
