@@ -17,7 +17,17 @@
 // The ceiling is there because this VM's second core is not always a whole core: within
 // minutes, the same two independent frames took 250 us each (ceiling 1.99) and 366 us each
 // (1.36) while one frame alone stayed at 250 us.
+//
+// The last column is the cores' round trip: the pool's two threads hand one cache line back and
+// forth (an atomic counter each increments in turn) and the time per round trip is taken, once
+// between each round of chunks; its median. It is what one line written by one core and then
+// read by the other costs at the time of the run, and on this host it moves between ~150 and
+// ~650 ns within minutes. The threaded frame shares lines between the cores (each band reads
+// the bodies that cross it from the other core; the bodies of both threads lie side by side in
+// one world), the ceiling's two frames do not: with a slow round trip the geometry phase costs
+// more on two threads and the speedup drops while the ceiling stays (README "Threads").
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +47,29 @@ double quantile(std::vector<double> x, double p) {
 }
 
 std::vector<std::string> phase_rows;  // the second table
+
+// The median time, in ns, of a cache line's round trip between the pool's threads 0 and 1: each
+// waits for the counter to reach its turn and increments it. (Spins without yielding: both
+// threads are running, and each turn is a few hundred ns.)
+double round_trip_ns(render::WorkerPool& pool) {
+    constexpr int kTrips = 4000;
+    struct alignas(64) Line {
+        std::atomic<int> turn{0};
+    } line;
+    double ns = 0;
+    auto job = [&](int t) {
+        if (t > 1) return;
+        const clk::time_point start = clk::now();
+        for (int k = t; k < 2 * kTrips; k += 2) {
+            while (line.turn.load(std::memory_order_acquire) != k) {
+            }
+            line.turn.store(k + 1, std::memory_order_release);
+        }
+        if (t == 0) ns = std::chrono::duration<double, std::nano>(clk::now() - start).count() / kTrips;
+    };
+    pool.run(job);
+    return ns;
+}
 
 template <class T>
 void compare(const char* scene_name, int w, int h, render::PixelFormat f, int frames) {
@@ -74,7 +107,7 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
         own_world[t]->step(dt);
         render::draw_world(*own_canvas[t], *own_world[t], o, alone[t]);
     };
-    std::vector<double> ts, tb, te, ti, t1;
+    std::vector<double> ts, tb, te, ti, t1, rt;
     // Phases in us: (e)'s geometry and raster, (b)'s per thread geometry, raster and waits.
     std::vector<double> g1, r1, g[2], r[2], wt[2];
     auto us = [](double seconds) { return seconds * 1e6; };
@@ -84,7 +117,7 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
         out.push_back(std::chrono::duration<double, std::micro>(clk::now() - a).count());
     };
     constexpr int kChunk = 50;
-    for (int done = 0; done < frames; done += kChunk)
+    for (int done = 0; done < frames; done += kChunk, rt.push_back(round_trip_ns(pool)))
         for (int v = 0; v < 5; ++v)
             for (int i = 0; i < kChunk; ++i) {
                 if (v == 0) timed(ts, [&] { w0.step(dt), render::draw_world(c, w0, o, serial); });
@@ -103,10 +136,10 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
                 }
             }
     const double s = quantile(ts, 0.5), b = quantile(tb, 0.5), e = quantile(te, 0.5), i = quantile(ti, 0.5);
-    std::printf("| %s | %dx%d | %s | %.0f (%.0f) | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.1f of %d |\n",
+    std::printf("| %s | %dx%d | %s | %.0f (%.0f) | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.0f (%.0f) | %.2f | %.1f of %d | %.0f |\n",
                 scene_name, w, h, sizeof(T) == sizeof(double) ? "double" : "fixed", s, quantile(ts, 0.1), b, quantile(tb, 0.1),
                 s / b, e, quantile(te, 0.1), s / e, i, quantile(ti, 0.1), 2 * s / i,
-                balanced.edge.size() > 1 ? balanced.edge[1] : 0.0, h);
+                balanced.edge.size() > 1 ? balanced.edge[1] : 0.0, h, quantile(rt, 0.5));
     char row[400];
     auto m = [](const std::vector<double>& x) { return quantile(x, 0.5); };
     std::snprintf(row, sizeof row, "| %s | %dx%d | %s | %.0f | %.1f | %.1f | %.1f / %.1f | %.1f / %.1f | %.1f / %.1f |\n",
@@ -125,7 +158,8 @@ int main(int argc, char** argv) {
     }
     std::printf("frame in us: median (10th percentile) of %d frames per variant, interleaved in chunks of 50\n\n", frames);
     std::printf("| scene | display | engine | 1 thread | 2 threads, balanced | speedup | 2 threads, equal bands | speedup | "
-                "two 1-thread frames at once | ceiling | edge after |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "two 1-thread frames at once | ceiling | edge after | cores' round trip, ns |\n"
+                "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const char* sc : {"stress", "kiosk"}) {
         compare<fx::fixed>(sc, 800, 480, render::PixelFormat::rgb565(), frames);
         compare<double>(sc, 800, 480, render::PixelFormat::rgb565(), frames);
