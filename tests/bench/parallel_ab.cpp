@@ -21,8 +21,8 @@
 // The last column is the cores' round trip: the pool's two threads hand one cache line back and
 // forth (an atomic counter each increments in turn) and the time per round trip is taken, once
 // between each round of chunks; its median. It is what one line written by one core and then
-// read by the other costs at the time of the run, and on this host it moves between ~150 and
-// ~650 ns within minutes. The threaded frame shares lines between the cores (each band reads
+// read by the other costs at the time of the run, and on this host it moves between ~100 and
+// ~700 ns within minutes. The threaded frame shares lines between the cores (each band reads
 // the bodies that cross it from the other core; the bodies of both threads lie side by side in
 // one world), the ceiling's two frames do not: with a slow round trip the geometry phase costs
 // more on two threads and the speedup drops while the ceiling stays (README "Threads").
@@ -48,8 +48,8 @@ double quantile(std::vector<double> x, double p) {
 
 std::vector<std::string> phase_rows;  // the second table
 
-// The median time, in ns, of a cache line's round trip between the pool's threads 0 and 1: each
-// waits for the counter to reach its turn and increments it. (Spins without yielding: both
+// The time, in ns, of a cache line's round trip between the pool's threads 0 and 1, averaged over
+// 4000 of them: each thread waits for the counter to reach its turn and increments it. (Spins without yielding: both
 // threads are running, and each turn is a few hundred ns.)
 double round_trip_ns(render::WorkerPool& pool) {
     constexpr int kTrips = 4000;
