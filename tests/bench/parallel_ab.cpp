@@ -48,9 +48,9 @@ double quantile(std::vector<double> x, double p) {
 
 std::vector<std::string> phase_rows;  // the second table
 
-// The time, in ns, of a cache line's round trip between the pool's threads 0 and 1, averaged over
-// 4000 of them: each thread waits for the counter to reach its turn and increments it. (Spins without yielding: both
-// threads are running, and each turn is a few hundred ns.)
+// The time, in ns, of a cache line's round trip between the pool's threads 0 and 1, averaged
+// over 4000 of them: each thread waits for the counter to reach its turn and increments it.
+// (Spins without yielding: both threads are running, and each turn is a few hundred ns.)
 double round_trip_ns(render::WorkerPool& pool) {
     constexpr int kTrips = 4000;
     struct alignas(64) Line {
