@@ -823,8 +823,27 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
         };
         if (homes) {
             const uint8_t* home = s.home[gen & 1].data();
-            for (int i = 0; i < nb; ++i)
-                if (home[i] == tid) do_body(static_cast<std::size_t>(i));
+            auto next_home = [home, nb, tid](int i) {  // this thread's next body after i (nb: none)
+                do ++i;
+                while (i < nb && home[i] != tid);
+                return i;
+            };
+            // The body two ahead is fetched, for writing, while this one is done. Each core's
+            // hardware prefetchers, following its bodies' addresses, take lines of the other
+            // core's bodies between them: a step found its body's first line (the state it
+            // writes) gone to the other core for 15-25% of the bodies (stress, 800x480, while a
+            // line took 400-600 ns to the other core and back; time stamps around a first read
+            // of it), and for 1.3% with the prefetch.
+            constexpr int kAhead = 2;
+            int ahead = -1;
+            for (int k = 0; k <= kAhead; ++k) ahead = next_home(ahead);
+            for (int i = next_home(-1); i < nb; i = next_home(i)) {
+                if (ahead < nb) {
+                    WorkerPool::prefetch_for_write(&world.bodies[static_cast<std::size_t>(ahead)]);
+                    ahead = next_home(ahead);
+                }
+                do_body(static_cast<std::size_t>(i));
+            }
             for (int k = 0; k < threads; ++k) {  // close the lists
                 BandEntry& e = list[k][listed[k]];
                 e.idx = BandEntry::kEnd;
