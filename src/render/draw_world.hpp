@@ -623,7 +623,7 @@ struct ParallelScratch {
     // lists[(u * threads + k) * stride_list]; between two lists lie at least 64 bytes, so no
     // line holds two threads' entries.
     std::unique_ptr<BandEntry[]> lists;
-    std::size_t stride_list = 1;
+    std::size_t stride_list = 1, list_entries = 0;
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
@@ -644,7 +644,8 @@ struct ParallelScratch {
         frame.reset(new BodyFrame[bodies > 0 ? bodies : 1]);
         stride_list = bodies + 1 + (64 + sizeof(BandEntry) - 1) / sizeof(BandEntry);
         const std::size_t threads = static_cast<std::size_t>(pool.size());
-        lists.reset(new BandEntry[stride_list * threads * threads]);
+        list_entries = stride_list * threads * threads;
+        lists.reset(new BandEntry[list_entries]);
         for (auto& h : home) {
             h.resize(bodies);
             for (std::size_t i = 0; i < bodies; ++i) h[i] = static_cast<uint8_t>(i % static_cast<std::size_t>(pool.size()));
@@ -654,6 +655,17 @@ struct ParallelScratch {
         edge.reserve(static_cast<std::size_t>(pool.size()) + 1);  // (set by the first frame: no allocation there)
         busy.reset(new Busy[static_cast<std::size_t>(pool.size())]);
         smoothed.assign(static_cast<std::size_t>(pool.size()), 0.0);
+    }
+    // The next frame's generation, never 0. When the count wraps past 2^32 - 1, every ready
+    // flag is cleared first: a list entry that went unwritten for 2^32 frames (a list shorter
+    // all that time) would otherwise carry the new frame's number before its thread wrote it.
+    uint32_t next_generation() {
+        if (++generation == 0) {
+            for (std::size_t i = 0; i < list_entries; ++i) lists[i].ready.store(0, std::memory_order_relaxed);
+            for (std::size_t i = 0; i < bodies; ++i) frame[i].ready.store(0, std::memory_order_relaxed);
+            generation = 1;
+        }
+        return generation;
     }
     // Room a body of n points takes in an arena: whole cache lines (8 points), so each body's
     // points start a line.
@@ -770,7 +782,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
     if (homes)
         for (int t = 0; t <= threads; ++t) row[t] = static_cast<int>(std::lround(s.edge[static_cast<std::size_t>(t)]));
     const int nb = static_cast<int>(std::min(s.bodies, world.bodies.size()));
-    const uint32_t gen = ++s.generation;
+    const uint32_t gen = s.next_generation();
     std::atomic<int> next_body{0}, next_band{0};
     const LineStyle line{o.antialias, o.line_width};
     const int64_t margin = row_margin(line);  // a body's pixels lie within its points' rows widened by this

@@ -37,6 +37,7 @@ struct Variant {
     int32_t width = 256;   // line width, 1/256 px
     bool controls = false; // thrust, turn and curvature held
     std::vector<double> edges = {};  // one band per thread at these fixed rows (no balancing); empty: balanced
+    uint32_t generation = 0;  // the scratch's frame count to start from
 };
 
 template <class T, bool Paper = false>
@@ -56,6 +57,7 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     par.prepare(w, pool);
     par.band_rows = v.band_rows;
     if (!v.edges.empty()) par.edge = v.edges, par.balance = false;
+    par.generation = v.generation;
     const int W = 301, H = 207;  // odd sizes: the last band is partial
     const std::size_t stride = static_cast<std::size_t>(W * f.bytes_per_pixel());
     std::vector<uint8_t> a(stride * H, 0x11), b(stride * H, 0x11);
@@ -137,6 +139,29 @@ TEST(Parallel, BandEdgesAnywhere) {
                                       render::PixelFormat::rgb565(), {.width = 700, .edges = {0, 1, 2, 207}});
     threaded_equals_serial<double>("stress", 0.2, geo::Projection::azimuthal_equidistant, false, 3,
                                    render::PixelFormat::rgb888(), {.edges = {0, 180, 199.5, 207}});
+}
+
+// The frame count wraps past 2^32 - 1 within the 12 frames: the flags are cleared and 0 is
+// skipped, and the pixels stay those of one thread (a frame numbered 0 would take every
+// cleared entry for written). The race the clearing prevents, a list entry unwritten for 2^32
+// frames read before its thread rewrites it, cannot be brought about on demand.
+TEST(Parallel, FrameCountWraps) {
+    for (int threads : {2, 3})
+        for (int band_rows : {0, 16}) {
+            const Variant v{.band_rows = band_rows, .fused = true, .generation = UINT32_MAX - 5};
+            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, false, threads,
+                                              render::PixelFormat::rgb565(), v);
+        }
+    render::WorkerPool pool(2);
+    world::Scene scene;
+    ASSERT_TRUE(world::builtin_scene("stress", {60, 7, 6}, scene));
+    world::World<double> w(scene);
+    render::ParallelScratch<double> par;
+    par.prepare(w, pool);
+    par.generation = UINT32_MAX - 1;
+    EXPECT_EQ(par.next_generation(), UINT32_MAX);
+    EXPECT_EQ(par.next_generation(), 1u);
+    EXPECT_EQ(par.next_generation(), 2u);
 }
 
 // balance_bands, on made-up busy times: an edge moves towards the busier band by gain x the
