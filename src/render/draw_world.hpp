@@ -624,6 +624,9 @@ struct ParallelScratch {
     // line holds two threads' entries.
     std::unique_ptr<BandEntry[]> lists;
     std::size_t stride_list = 1, list_entries = 0;
+    BandEntry* list(int thread, int band, int threads) const {
+        return lists.get() + (static_cast<std::size_t>(thread) * static_cast<std::size_t>(threads) + static_cast<std::size_t>(band)) * stride_list;
+    }
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
@@ -786,6 +789,17 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
     std::atomic<int> next_body{0}, next_band{0};
     const LineStyle line{o.antialias, o.line_width};
     const int64_t margin = row_margin(line);  // a body's pixels lie within its points' rows widened by this
+    // Whether a body whose points span rows [top, bottom] (1/256 px) can put pixels in rows [y0, y1).
+    auto reaches = [margin](int y0, int y1, int32_t top, int32_t bottom) {
+        return bottom >= int64_t{y0} * kSub - margin && top < int64_t{y1} * kSub + margin;
+    };
+    // Draws such a body's lines clipped to rows [y0, y1). A body wholly inside the band (margin
+    // included) writes only there: drawn as on one thread, without the band's per-segment checks.
+    auto draw_in_band = [&c, &line, margin](int y0, int y1, const SubPoint* pts, std::size_t n, Rgb color, int32_t top,
+                                           int32_t bottom) {
+        const bool inside = top - margin >= int64_t{y0} * kSub && bottom + margin < int64_t{y1} * kSub;
+        draw_screen_points(c, pts, n, color, line, inside ? RowRange{} : RowRange{y0, y1});
+    };
 
     using clock = std::chrono::steady_clock;
     auto job = [&](int tid) {
@@ -801,7 +815,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
         uint32_t listed[256];
         if (homes)
             for (int k = 0; k < threads; ++k)
-                list[k] = s.lists.get() + (static_cast<std::size_t>(tid) * threads + k) * s.stride_list, listed[k] = 0;
+                list[k] = s.list(tid, k, threads), listed[k] = 0;
         auto do_body = [&](std::size_t idx) {
             before(idx);
             const auto& b = world.bodies[idx];
@@ -819,7 +833,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                 // Written only when it changes (rarely): the threads' bodies share these lines.
                 if (s.home[(gen + 1) & 1][idx] != h) s.home[(gen + 1) & 1][idx] = h;
                 for (int k = 0; k < threads && n > 0; ++k) {  // the bands it reaches
-                    if (bottom < int64_t{row[k]} * kSub - margin || top >= int64_t{row[k + 1]} * kSub + margin) continue;
+                    if (!reaches(row[k], row[k + 1], top, bottom)) continue;
                     BandEntry& e = list[k][listed[k]++];
                     e.top = top, e.bottom = bottom, e.count = static_cast<uint32_t>(n), e.idx = static_cast<uint32_t>(idx);
                     e.points = pts, e.color = body_color(b);
@@ -868,7 +882,6 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
         auto draw_band = [&](int k) {  // with band_rows set
             const int y0 = k * band_rows, y1 = std::min(y0 + band_rows, c.height());
             if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
-            const int64_t lo = int64_t{y0} * kSub - margin, hi = int64_t{y1} * kSub + margin;  // reaches: y in [lo, hi)
             for (int i = 0; i < nb; ++i) {
                 const std::size_t idx = static_cast<std::size_t>(i);
                 const BodyFrame& f = s.frame[idx];
@@ -877,12 +890,8 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                     while (f.ready.load(std::memory_order_acquire) != gen) WorkerPool::pause();
                     waited += clock::now() - w0;
                 }
-                if (f.count == 0 || f.bottom < lo || f.top >= hi) continue;
-                // A body wholly inside the band (margin included) writes only there: drawn as on
-                // one thread, without the band's per-segment checks.
-                const bool inside = f.top - margin >= int64_t{y0} * kSub && f.bottom + margin < int64_t{y1} * kSub;
-                draw_screen_points(c, f.points, f.count, body_color(world.bodies[idx]), line,
-                                   inside ? RowRange{} : RowRange{y0, y1});
+                if (f.count == 0 || !reaches(y0, y1, f.top, f.bottom)) continue;
+                draw_in_band(y0, y1, f.points, f.count, body_color(world.bodies[idx]), f.top, f.bottom);
             }
         };
         const clock::time_point geometry_done = clock::now();
@@ -890,7 +899,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
             const int y0 = row[tid], y1 = row[tid + 1];
             if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
             const BandEntry* head[256];
-            for (int u = 0; u < threads; ++u) head[u] = s.lists.get() + (static_cast<std::size_t>(u) * threads + tid) * s.stride_list;
+            for (int u = 0; u < threads; ++u) head[u] = s.list(u, tid, threads);
             for (;;) {
                 int first = -1;  // the thread whose next entry has the least idx
                 uint32_t least = BandEntry::kEnd;
@@ -905,8 +914,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
                 }
                 if (first < 0) break;  // every list closed
                 const BandEntry& e = *head[first]++;
-                const bool inside = e.top - margin >= int64_t{y0} * kSub && e.bottom + margin < int64_t{y1} * kSub;
-                draw_screen_points(c, e.points, e.count, e.color, line, inside ? RowRange{} : RowRange{y0, y1});
+                draw_in_band(y0, y1, e.points, e.count, e.color, e.top, e.bottom);
             }
         } else {
             for (int k; (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) draw_band(k);
