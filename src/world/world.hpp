@@ -36,12 +36,20 @@ namespace noneuclid::world {
 using geo::Polar;
 using geo::Pose;
 
-enum class Action : uint8_t { thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset };
-inline constexpr int kActionCount = 7;
+// What the buttons and keys ask of the world. Held actions (thrust, the turns, curvature up and
+// down) act while held; the others act once, on the press: the next preset, reset, and K set
+// to -1, 0 or +1 (the desktop's keys 1, 2, 3).
+enum class Action : uint8_t {
+    thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset, hyperbolic, flat, spherical
+};
+inline constexpr int kActionCount = 10;
 inline const char* action_name(Action a) {
-    static const char* const names[] = {"thrust", "left", "right", "curvature_up", "curvature_down", "preset", "reset"};
+    static const char* const names[] = {"thrust",      "left",  "right",      "curvature_up", "curvature_down",
+                                        "preset",      "reset", "hyperbolic", "flat",         "spherical"};
     return names[static_cast<int>(a)];
 }
+// Whether the action acts once on its press (rather than while held).
+inline bool acts_on_press(Action a) { return a >= Action::next_preset; }
 inline bool parse_action(const std::string& s, Action& out) {
     for (int i = 0; i < kActionCount; ++i)
         if (s == action_name(static_cast<Action>(i))) {
@@ -146,8 +154,14 @@ public:
 
     void press(Action a) {
         held_[static_cast<int>(a)] = true;
-        if (a == Action::next_preset) next_preset();
-        if (a == Action::reset) reset();
+        switch (a) {
+            case Action::next_preset: next_preset(); break;
+            case Action::reset: reset(); break;
+            case Action::hyperbolic: K = T(-1); break;
+            case Action::flat: K = T(0); break;
+            case Action::spherical: K = T(1); break;
+            default: break;
+        }
     }
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 

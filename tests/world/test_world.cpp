@@ -7,7 +7,6 @@
 #include <string>
 
 #include "geometry/reference.hpp"
-#include "world/actions.hpp"
 #include "world/dump.hpp"
 #include "world/scene_file.hpp"
 #include "world/world.hpp"
@@ -199,36 +198,26 @@ TEST(Actions, PresetsCycleAndResetRestores) {
     EXPECT_EQ(w2.K, 0.25);
 }
 
-TEST(Actions, ScriptsParseAndReportErrorsWithTheirLine) {
-    std::vector<ActionEvent> ev;
-    ActionError err;
-    ASSERT_TRUE(parse_actions("# comment\n1.5 release thrust\n0 press thrust  # go\n\n2 tap preset\n", "a.txt", ev, err));
-    ASSERT_EQ(ev.size(), 3u);
-    EXPECT_EQ(ev[0].time, 0.0);  // sorted by time
-    EXPECT_EQ(ev[0].kind, ActionEvent::press);
-    EXPECT_EQ(ev[2].action, Action::next_preset);
-    EXPECT_FALSE(parse_actions("0 press thrust\nsoon press thrust\n", "a.txt", ev, err));
-    EXPECT_EQ(err.to_string(), "a.txt:2: expected a time in seconds (a number >= 0) first, found 'soon'");
-    EXPECT_FALSE(parse_actions("1 push thrust\n", "a.txt", ev, err));
-    EXPECT_EQ(err.line, 1);
-    EXPECT_NE(err.message.find("press, release or tap"), std::string::npos);
-    EXPECT_FALSE(parse_actions("1 press warp\n", "a.txt", ev, err));
-    EXPECT_NE(err.message.find("'warp'"), std::string::npos);
-    EXPECT_FALSE(parse_actions("1 press thrust now\n", "a.txt", ev, err));
-    EXPECT_FALSE(load_actions_file("/nonexistent/actions.txt", ev, err));
-    EXPECT_NE(err.to_string().find("cannot read"), std::string::npos);
-}
-
 // Same scene, same actions: the same dump, byte for byte, for every engine.
+struct Press {
+    double time;
+    Action action;
+    bool down;
+};
 template <class W>
-std::string run(const Scene& s, const std::vector<ActionEvent>& ev, int frames) {
+std::string run(const Scene& s, const std::vector<Press>& presses, int frames) {
     W w(s);
     std::string out;
-    std::size_t next = apply_actions(w, ev, 0, 0.0);
+    std::size_t next = 0;
+    auto apply_due = [&] {
+        for (; next < presses.size() && presses[next].time <= w.time + 1e-9; ++next)
+            presses[next].down ? w.press(presses[next].action) : w.release(presses[next].action);
+    };
+    apply_due();
     dump_frame(w, {}, out);
     for (int i = 0; i < frames; ++i) {
         w.step(typename W::scalar(1.0 / 60));
-        next = apply_actions(w, ev, next, w.time);
+        apply_due();
         dump_frame(w, {}, out);
     }
     return out;
@@ -236,16 +225,32 @@ std::string run(const Scene& s, const std::vector<ActionEvent>& ev, int frames) 
 TEST(Determinism, SameActionsSameResultBitForBit) {
     Scene s;
     ASSERT_TRUE(builtin_scene("kiosk", {}, s));
-    std::vector<ActionEvent> ev;
-    ActionError err;
-    ASSERT_TRUE(parse_actions("0.1 press thrust\n0.5 press left\n0.9 release thrust\n1.0 press curvature_down\n"
-                              "1.4 release curvature_down\n1.5 tap preset\n", "x", ev, err));
+    const std::vector<Press> ev = {{0.1, Action::thrust, true},          {0.5, Action::turn_left, true},
+                                   {0.9, Action::thrust, false},         {1.0, Action::curvature_down, true},
+                                   {1.4, Action::curvature_down, false}, {1.5, Action::next_preset, true},
+                                   {1.5, Action::next_preset, false},    {1.7, Action::spherical, true}};
     EXPECT_EQ(run<World<fixed>>(s, ev, 120), run<World<fixed>>(s, ev, 120));
     EXPECT_EQ(run<World<double>>(s, ev, 120), run<World<double>>(s, ev, 120));
     using PaperWorld = World<double, true>;
     EXPECT_EQ(run<PaperWorld>(s, ev, 60), run<PaperWorld>(s, ev, 60));
     // and the actions did something
     EXPECT_NE(run<World<fixed>>(s, ev, 120), run<World<fixed>>(s, {}, 120));
+}
+
+TEST(Actions, HyperbolicFlatSphericalSetKOnThePress) {
+    Scene s = one_body(-0.3, 1.0, 30, 0.5, 10);
+    World<double> w(s);
+    w.press(Action::spherical);
+    EXPECT_EQ(w.K, 1.0);
+    w.release(Action::spherical);
+    w.press(Action::hyperbolic);
+    EXPECT_EQ(w.K, -1.0);
+    w.press(Action::flat);
+    EXPECT_EQ(w.K, 0.0);
+    for (Action a : {Action::spherical, Action::hyperbolic, Action::flat, Action::next_preset, Action::reset})
+        EXPECT_TRUE(acts_on_press(a)) << action_name(a);
+    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down})
+        EXPECT_FALSE(acts_on_press(a)) << action_name(a);
 }
 
 // ---- scenes ------------------------------------------------------------------------------------
