@@ -157,4 +157,18 @@ LoadedFont default_hud_font(std::string* note, const std::string& console_fonts_
     return font;
 }
 
+bool hud_font(const std::string& choice, LoadedFont& out, std::string& error) {
+    if (choice.empty()) {
+        out = default_hud_font(nullptr);
+        return true;
+    }
+    if (choice == "builtin") {
+        out = LoadedFont{};
+        out.font = render::builtin_font();
+        out.source = "built-in 6x8";
+        return true;
+    }
+    return load_console_font(choice, out, error);
+}
+
 }  // namespace noneuclid::platform

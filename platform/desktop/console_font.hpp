@@ -1,30 +1,16 @@
 // Console fonts from files: PSF1/PSF2, plain or gzip-compressed (.psf, .psf.gz, .psfu.gz), as
 // Debian ships them in /usr/share/consolefonts (package console-setup-linux), and the choice of
-// the HUD's font.
+// the HUD's font (platform::hud_font, declared in app/platform.hpp, is defined here).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "app/platform.hpp"
 #include "render/font.hpp"
 
 namespace noneuclid::platform {
-
-// A font together with the bytes it points into. Move-only: font.glyphs points into bytes
-// (a moved vector keeps its buffer, a copied one would not). For the built-in font, bytes is
-// empty and font points at constant data.
-struct LoadedFont {
-    std::vector<uint8_t> bytes;
-    render::Font font;
-    std::string source;  // the file's path, or "built-in 6x8"
-
-    LoadedFont() = default;
-    LoadedFont(LoadedFont&&) noexcept = default;
-    LoadedFont& operator=(LoadedFont&&) noexcept = default;
-    LoadedFont(const LoadedFont&) = delete;
-    LoadedFont& operator=(const LoadedFont&) = delete;
-};
 
 // Reads a PSF font, gzip-compressed or not, from `path`. On failure returns false, leaves `out`
 // unchanged and sets `error` to one sentence naming the path.

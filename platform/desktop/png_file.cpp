@@ -1,4 +1,5 @@
-#include "desktop/png_file.hpp"
+// write_png and read_png (app/platform.hpp) with libpng.
+#include "app/platform.hpp"
 
 #include <png.h>
 

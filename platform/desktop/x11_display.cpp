@@ -1,33 +1,24 @@
-// The desktop window (Xlib + MIT-SHM) and `noneuclid run`'s loop. See x11_window.hpp.
-#include "desktop/x11_window.hpp"
-
+// The desktop window as a display (app/display.hpp): plain Xlib, MIT-SHM when the server
+// offers it (XPutImage otherwise), a canvas whose memory is the XImage's buffer, the keys as
+// controls, waiting for events on the X connection until the frame is due.
 #include <X11/XKBlib.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
 #include <X11/extensions/XShm.h>
 #include <X11/keysym.h>
+#include <poll.h>
 #include <sys/ipc.h>
 #include <sys/shm.h>
-#include <time.h>
 
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <iterator>
+#include <cstring>
 #include <string>
 #include <utility>
 
-#if NONEUCLID_HAVE_DESKTOP
-#include "desktop/console_font.hpp"
-#endif
-#if NONEUCLID_HAVE_PNG
-#include "desktop/png_file.hpp"
-#endif
-#include "render/session.hpp"
-#include "run_stats.hpp"
-#include "world/controls.hpp"
-#include "world/world.hpp"
+#include "app/platform.hpp"
 
 namespace noneuclid::platform {
 namespace {
@@ -64,12 +55,6 @@ bool format_of(const XImage& image, render::PixelFormat& f) {
     return (image.bits_per_pixel == 24 || image.bits_per_pixel == 32) && f.supported();
 }
 
-double now_seconds() {
-    timespec t{};
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
-}
-
 class X11Window {
 public:
     ::Display* dpy = nullptr;
@@ -93,23 +78,25 @@ public:
         XCloseDisplay(dpy);
     }
 
-    // Opens the display and the window; on failure prints one sentence and returns the status.
-    int open(int w, int h) {
+    // Opens the display and the window; on failure false, with one sentence in `error`.
+    bool open(int w, int h, std::string& error) {
         const char* name = std::getenv("DISPLAY");
         dpy = XOpenDisplay(nullptr);
         if (!dpy) {
-            std::fprintf(stderr, "noneuclid: cannot open the X display '%s': start an X server (or set DISPLAY to a running one), or use --display png.\n",
-                         name ? name : "");
-            return 2;
+            error = std::string("cannot open the X display '") + (name ? name : "") +
+                    "': start an X server (or set DISPLAY to a running one), or use --display png.";
+            return false;
         }
         XSetIOErrorHandler(lost_server);
         const int screen = DefaultScreen(dpy);
         visual = DefaultVisual(dpy, screen);
         depth = DefaultDepth(dpy, screen);
         if (visual->c_class != TrueColor || (depth != 24 && depth != 32)) {
-            std::fprintf(stderr, "noneuclid: the X display's default visual is %d-bit %s, and noneuclid draws only into 24- or 32-bit TrueColor: run the X server at depth 24 (e.g. Xvfb -screen 0 1024x768x24).\n",
-                         depth, visual->c_class == TrueColor ? "TrueColor" : "non-TrueColor");
-            return 2;
+            error = "the X display's default visual is " + std::to_string(depth) + "-bit " +
+                    (visual->c_class == TrueColor ? "TrueColor" : "non-TrueColor") +
+                    ", and noneuclid draws only into 24- or 32-bit TrueColor: run the X server at depth 24 (e.g. "
+                    "Xvfb -screen 0 1024x768x24).";
+            return false;
         }
         int major = 0, minor = 0;
         Bool pixmaps = False;
@@ -131,14 +118,14 @@ public:
         XSetWMProtocols(dpy, win, &wm_delete, 1);
         XSelectInput(dpy, win, KeyPressMask | KeyReleaseMask | StructureNotifyMask | ExposureMask);
         gc = XCreateGC(dpy, win, 0, nullptr);
-        if (!create_image(w, h)) return 2;
+        if (!create_image(w, h, error)) return false;
         XMapWindow(dpy, win);
         XEvent ev;
         do {  // blocks until the window is on screen (the screenshot needs it viewable)
             XWindowEvent(dpy, win, StructureNotifyMask, &ev);
             if (ev.type == ConfigureNotify) pending_w = ev.xconfigure.width, pending_h = ev.xconfigure.height;
         } while (ev.type != MapNotify);
-        return 0;
+        return true;
     }
 
     int pending_w = 0, pending_h = 0;  // the size the last ConfigureNotify asked for
@@ -159,7 +146,7 @@ public:
     }
 
     // A shared-memory image if the server takes one, else a client-side image for XPutImage.
-    bool create_image(int w, int h) {
+    bool create_image(int w, int h, std::string& error) {
         destroy_image();
         using_shm = false;
         if (shm_available) {
@@ -194,7 +181,8 @@ public:
             image = XCreateImage(dpy, visual, static_cast<unsigned>(depth), ZPixmap, 0, nullptr,
                                  static_cast<unsigned>(w), static_cast<unsigned>(h), 32, 0);
             if (!image) {
-                std::fprintf(stderr, "noneuclid: Xlib could not make a %dx%d image for the window: make the window smaller.\n", w, h);
+                error = "Xlib could not make a " + std::to_string(w) + "x" + std::to_string(h) +
+                        " image for the window: make the window smaller.";
                 return false;
             }
             image->byte_order = LSBFirst;  // our words are little-endian; Xlib converts if the server differs
@@ -202,14 +190,17 @@ public:
             if (!image->data) {
                 XDestroyImage(image);
                 image = nullptr;
-                std::fprintf(stderr, "noneuclid: out of memory for a %dx%d window image: make the window smaller.\n", w, h);
+                error = "out of memory for a " + std::to_string(w) + "x" + std::to_string(h) +
+                        " window image: make the window smaller.";
                 return false;
             }
         }
         render::PixelFormat format;
         if (!format_of(*image, format)) {
-            std::fprintf(stderr, "noneuclid: the X display's pixels are %d bits with masks %06lx/%06lx/%06lx, which the canvas cannot draw: run the X server at depth 24 TrueColor.\n",
-                         image->bits_per_pixel, image->red_mask, image->green_mask, image->blue_mask);
+            char masks[64];
+            std::snprintf(masks, sizeof masks, "%06lx/%06lx/%06lx", image->red_mask, image->green_mask, image->blue_mask);
+            error = "the X display's pixels are " + std::to_string(image->bits_per_pixel) + " bits with masks " + masks +
+                    ", which the canvas cannot draw: run the X server at depth 24 TrueColor.";
             destroy_image();
             return false;
         }
@@ -226,9 +217,8 @@ public:
         XSync(dpy, False);  // the server has read the pixels before we draw the next frame into them
     }
 
-    // The window's contents read back from the X server, written as a PNG.
-    int screenshot(const std::string& path) {
-#if NONEUCLID_HAVE_PNG
+    // The window's contents read back from the X server.
+    bool read_back(app::Picture& out, std::string& error) {
         g_x_error = false;
         XErrorHandler old = XSetErrorHandler(note_x_error);
         XImage* shot = XGetImage(dpy, win, 0, 0, static_cast<unsigned>(width), static_cast<unsigned>(height), AllPlanes, ZPixmap);
@@ -236,158 +226,105 @@ public:
         XSetErrorHandler(old);
         if (!shot || g_x_error) {
             if (shot) XDestroyImage(shot);
-            std::fprintf(stderr, "noneuclid: the X server would not give the window's contents back for %s: keep the window mapped and on screen until noneuclid exits.\n",
-                         path.c_str());
-            return 1;
+            error = "the X server would not give the window's contents back: keep the window mapped and on screen until noneuclid exits.";
+            return false;
         }
         render::PixelFormat format;
         if (!format_of(*shot, format)) {
-            std::fprintf(stderr, "noneuclid: the X server's %d-bit pixels cannot be written to %s: run the X server at depth 24 TrueColor.\n",
-                         shot->bits_per_pixel, path.c_str());
+            error = "the X server's " + std::to_string(shot->bits_per_pixel) +
+                    "-bit pixels cannot be read back: run the X server at depth 24 TrueColor.";
             XDestroyImage(shot);
-            return 1;
+            return false;
         }
+        const int bpp = shot->bits_per_pixel / 8;
+        out.pixels.assign(static_cast<std::size_t>(shot->bytes_per_line) * static_cast<std::size_t>(shot->height), 0);
+        std::memcpy(out.pixels.data(), shot->data, out.pixels.size());
         if (shot->byte_order == MSBFirst) {  // big-endian words: reverse each pixel's bytes
-            const int bpp = shot->bits_per_pixel / 8;
             for (int y = 0; y < shot->height; ++y) {
-                auto* p = reinterpret_cast<unsigned char*>(shot->data) + static_cast<std::ptrdiff_t>(y) * shot->bytes_per_line;
+                uint8_t* p = out.pixels.data() + static_cast<std::ptrdiff_t>(y) * shot->bytes_per_line;
                 for (int x = 0; x < shot->width; ++x, p += bpp)
                     for (int i = 0; i < bpp / 2; ++i) std::swap(p[i], p[bpp - 1 - i]);
             }
         }
-        const render::Canvas c(shot->data, shot->width, shot->height, shot->bytes_per_line, format);
-        std::string error;
-        const bool ok = write_png(path, c, error);
+        out.canvas = render::Canvas(out.pixels.data(), shot->width, shot->height, shot->bytes_per_line, format);
         XDestroyImage(shot);
-        if (!ok) {
-            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
-            return 1;
-        }
-        std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, read back from the X server)\n", path.c_str(), width, height);
-        return 0;
-#else
-        std::fprintf(stderr, "noneuclid: this build has no PNG support, so --screenshot %s cannot be written: install libpng-dev and rebuild.\n",
-                     path.c_str());
-        return 1;
-#endif
+        return true;
     }
 };
 
-// What a key does: a held action, or a one-shot command.
-enum class Key { none, quit, k_minus1, k_zero, k_plus1, projection, hud, reset, action };
-
-Key key_of(KeySym s, world::Action& action) {
-    using world::Action;
+// The control a key is, if any.
+bool control_of(KeySym s, world::Control& c) {
+    using world::Control;
     switch (s) {
-        case XK_Escape: return Key::quit;
-        case XK_Up: case XK_w: case XK_W: case XK_KP_Up: action = Action::thrust; return Key::action;
-        case XK_Left: case XK_a: case XK_A: case XK_KP_Left: action = Action::turn_left; return Key::action;
-        case XK_Right: case XK_d: case XK_D: case XK_KP_Right: action = Action::turn_right; return Key::action;
-        case XK_plus: case XK_equal: case XK_bracketright: case XK_KP_Add: action = Action::curvature_up; return Key::action;
-        case XK_minus: case XK_bracketleft: case XK_KP_Subtract: action = Action::curvature_down; return Key::action;
-        case XK_1: case XK_KP_1: return Key::k_minus1;
-        case XK_2: case XK_KP_2: return Key::k_zero;
-        case XK_3: case XK_KP_3: return Key::k_plus1;
-        case XK_p: case XK_P: return Key::projection;
-        case XK_h: case XK_H: return Key::hud;
-        case XK_r: case XK_R: return Key::reset;
-        default: return Key::none;
+        case XK_Escape: c = Control::quit; return true;
+        case XK_Up: case XK_w: case XK_W: case XK_KP_Up: c = Control::thrust; return true;
+        case XK_Left: case XK_a: case XK_A: case XK_KP_Left: c = Control::left; return true;
+        case XK_Right: case XK_d: case XK_D: case XK_KP_Right: c = Control::right; return true;
+        case XK_plus: case XK_equal: case XK_bracketright: case XK_KP_Add: c = Control::curvature_up; return true;
+        case XK_minus: case XK_bracketleft: case XK_KP_Subtract: c = Control::curvature_down; return true;
+        case XK_1: case XK_KP_1: c = Control::hyperbolic; return true;
+        case XK_2: case XK_KP_2: c = Control::flat; return true;
+        case XK_3: case XK_KP_3: c = Control::spherical; return true;
+        case XK_p: case XK_P: c = Control::projection; return true;
+        case XK_h: case XK_H: c = Control::hud; return true;
+        case XK_r: case XK_R: c = Control::reset; return true;
+        default: return false;
     }
 }
 
-template <class W>
-int run_loop(X11Window& x, const world::Scene& scene, const RunOptions& o) {
-    using T = typename W::scalar;
-#if NONEUCLID_HAVE_DESKTOP
-    const LoadedFont loaded = default_hud_font(nullptr);
-    const render::Font& font = loaded.font;
-#else
-    const render::Font& font = render::builtin_font();
-#endif
-    render::SessionOptions so;
-    so.draw.projection = o.projection;
-    so.draw.antialias = o.antialias;
-    so.hud = o.hud;
-    so.scene_name = scene.name.c_str();
-    so.controls = kDesktopControls;
-    render::Session<W> session(scene, so, font);
-    W& world = session.world;
-    bool quit = false;
-    const long period_ns = static_cast<long>(1e9 / o.fps + 0.5);
-    timespec next{};
-    clock_gettime(CLOCK_MONOTONIC, &next);
-    const double start = now_seconds();
-    double fps_since = start;
-    long fps_frames = 0, frames = 0;
-    while (!quit && (o.frames == 0 || frames < o.frames)) {
-        while (XPending(x.dpy)) {
-            XEvent ev;
-            XNextEvent(x.dpy, &ev);
-            if (ev.type == KeyPress || ev.type == KeyRelease) {
-                world::Action action{};
-                const Key k = key_of(XLookupKeysym(&ev.xkey, 0), action);
-                const auto control = static_cast<world::Control>(action);  // the same order
-                if (ev.type == KeyRelease) {
-                    if (k == Key::action) session.control({control, false});
-                    continue;
+class X11Display final : public app::Display {
+public:
+    bool open(int w, int h, std::string& error) { return x_.open(w, h, error); }
+
+    render::Canvas canvas() override { return x_.canvas; }
+    void present() override { x_.show(); }
+    bool wait(int64_t deadline_ns, app::InputSink& sink) override {
+        for (;;) {
+            while (XPending(x_.dpy)) {
+                XEvent ev;
+                XNextEvent(x_.dpy, &ev);
+                world::Control c{};
+                if ((ev.type == KeyPress || ev.type == KeyRelease) && control_of(XLookupKeysym(&ev.xkey, 0), c)) {
+                    sink.input({c, ev.type == KeyPress});
+                } else if (ev.type == ConfigureNotify) {
+                    x_.pending_w = ev.xconfigure.width, x_.pending_h = ev.xconfigure.height;
+                } else if (ev.type == ClientMessage && static_cast<Atom>(ev.xclient.data.l[0]) == x_.wm_delete) {
+                    closed_ = true;
                 }
-                switch (k) {
-                    case Key::quit: quit = true; break;
-                    case Key::action: session.control({control, true}); break;
-                    case Key::k_minus1: world.K = T(-1); break;
-                    case Key::k_zero: world.K = T(0); break;
-                    case Key::k_plus1: world.K = T(1); break;
-                    case Key::projection: session.control({world::Control::projection, true}); break;
-                    case Key::hud: session.control({world::Control::hud, true}); break;
-                    case Key::reset:
-                        session.control({world::Control::reset, true});
-                        session.control({world::Control::reset, false});
-                        break;
-                    case Key::none: break;
-                }
-            } else if (ev.type == ConfigureNotify) {
-                x.pending_w = ev.xconfigure.width, x.pending_h = ev.xconfigure.height;
-            } else if (ev.type == ClientMessage && static_cast<Atom>(ev.xclient.data.l[0]) == x.wm_delete) {
-                quit = true;
+            }
+            std::string error;
+            if (x_.pending_w > 0 && (x_.pending_w != x_.width || x_.pending_h != x_.height) &&
+                !x_.create_image(x_.pending_w, x_.pending_h, error)) {
+                std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+                return false;
+            }
+            const int64_t now = monotonic_ns();
+            if (closed_ || now >= deadline_ns) return true;
+            pollfd fd{ConnectionNumber(x_.dpy), POLLIN, 0};
+            const int64_t ms = (deadline_ns - now + 999999) / 1000000;
+            if (poll(&fd, 1, static_cast<int>(ms > 1000 ? 1000 : ms)) < 0 && errno != EINTR) {
+                std::fprintf(stderr, "noneuclid: waiting for the X server failed (%s): restart noneuclid.\n",
+                             std::strerror(errno));
+                return false;
             }
         }
-        if (quit) break;
-        if (x.pending_w > 0 && (x.pending_w != x.width || x.pending_h != x.height)) {
-            if (!x.create_image(x.pending_w, x.pending_h)) return 2;
-        }
-        session.frame(x.canvas);
-        x.show();
-        ++frames, ++fps_frames;
-        const double t = now_seconds();
-        if (t - fps_since >= 0.5) session.fps = static_cast<double>(fps_frames) / (t - fps_since), fps_since = t, fps_frames = 0;
-
-        // Pacing: sleep until the next frame's deadline; after a stall, start again from now
-        // rather than racing to catch up.
-        next.tv_nsec += period_ns;
-        while (next.tv_nsec >= 1000000000L) next.tv_nsec -= 1000000000L, ++next.tv_sec;
-        timespec now{};
-        clock_gettime(CLOCK_MONOTONIC, &now);
-        const double late = static_cast<double>(now.tv_sec - next.tv_sec) + static_cast<double>(now.tv_nsec - next.tv_nsec) * 1e-9;
-        if (late > static_cast<double>(period_ns) * 1e-9) next = now;
-        while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
-        }
     }
+    bool closing() const override { return closed_; }
+    bool read_back(app::Picture& out, std::string& error) override { return x_.read_back(out, error); }
+    std::string stats_note() const override { return x_.using_shm ? "MIT-SHM" : "XPutImage"; }
+    const char* legend() const override { return "keys"; }
 
-    int status = 0;
-    if (!o.screenshot.empty()) status = x.screenshot(o.screenshot);
-    if (o.stats) print_run_stats(frames, now_seconds() - start, x.using_shm ? "MIT-SHM" : "XPutImage");
-    return status;
-}
+private:
+    X11Window x_;
+    bool closed_ = false;
+};
 
 }  // namespace
 
-int run_x11(const world::Scene& scene, const RunOptions& o) {
-    X11Window x;
-    if (const int rc = x.open(o.width, o.height); rc != 0) return rc;
-    if (o.engine == "double") return run_loop<world::World<double>>(x, scene, o);
-    if (o.engine == "float") return run_loop<world::World<float>>(x, scene, o);
-    if (o.engine == "paper") return run_loop<world::World<double, true>>(x, scene, o);
-    return run_loop<world::World<fx::fixed>>(x, scene, o);
+std::unique_ptr<app::Display> open_window(const WindowSpec& spec, std::string& error) {
+    auto d = std::make_unique<X11Display>();
+    if (!d->open(spec.width, spec.height, error)) return nullptr;
+    return d;
 }
 
 }  // namespace noneuclid::platform

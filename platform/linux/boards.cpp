@@ -85,3 +85,14 @@ bool detect_board(world::Board& out, std::string& why, std::string& error) {
 }
 
 }  // namespace noneuclid::platform
+
+namespace noneuclid::platform {
+
+bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error) {
+    if (spec.empty()) return detect_board(out, note, error);
+    if (!load_board(spec, out, error)) return false;
+    note = "board " + out.name + " (" + out.file + ")";
+    return true;
+}
+
+}  // namespace noneuclid::platform

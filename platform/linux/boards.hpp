@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/platform.hpp"
 #include "world/board.hpp"
 
 namespace noneuclid::platform {

@@ -14,7 +14,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "linux/input.hpp"  // monotonic_ns
+#include "app/platform.hpp"  // monotonic_ns
 #include "render/blit.hpp"
 
 namespace noneuclid::platform {
@@ -152,6 +152,14 @@ void Fbdev::present() {
         }
     }
     render::copy_canvas(back_, page(shown_page_));
+}
+
+render::Canvas Fbdev::read_back(std::vector<uint8_t>& pixels) const {
+    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(back_.width()) * format_.bytes_per_pixel();
+    pixels.assign(static_cast<std::size_t>(stride) * static_cast<std::size_t>(back_.height()), 0);
+    const render::Canvas copy(pixels.data(), back_.width(), back_.height(), stride, format_);
+    render::copy_canvas(page(shown_page_), copy);
+    return copy;
 }
 
 std::string Fbdev::describe() const {

@@ -4,7 +4,7 @@
 // copied to the mapped framebuffer once per frame (render::copy_canvas). When the virtual
 // screen holds two pages and FBIOPAN_DISPLAY works, the copy goes to the hidden page and the
 // display pans to it; FBIO_WAITFORVSYNC is used when the driver answers it. Neither is counted
-// on: DRM's fbdev emulation usually offers neither (see ../shared/notes/linux-platform.md).
+// on: DRM's fbdev emulation usually offers neither (docs/kiosk.md).
 //
 // The console: if stdin is a virtual terminal, it is put in KD_GRAPHICS (fbcon stops drawing
 // text and the cursor) with echo off, and restored on exit, on SIGINT/TERM/HUP/QUIT and on
@@ -36,6 +36,8 @@ public:
     const render::Canvas& back() const { return back_; }  // draw here
     void present();                                         // copy to the screen (pan/vsync if working)
     bool vsync() const { return vsync_ok_; }                // FBIO_WAITFORVSYNC worked so far
+    // What the screen shows: the shown page, copied out of the framebuffer's memory.
+    render::Canvas read_back(std::vector<uint8_t>& pixels) const;
     int width() const { return back_.width(); }
     int height() const { return back_.height(); }
 

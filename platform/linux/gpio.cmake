@@ -1,5 +1,5 @@
 # Kiosk input (included from platform/CMakeLists.txt): noneuclid_input = GPIO buttons through
-# libgpiod + evdev key devices + print_input_events (`noneuclid buttons`).
+# libgpiod + evdev key devices + the board's buttons opened + `noneuclid buttons`.
 #
 # libgpiod has two incompatible APIs and no version macro, so the major version from pkg-config
 # picks the backend: gpio_v1.cpp (1.x: Debian 12's libgpiod-dev) or gpio_v2.cpp (2.x: Debian 13,
@@ -103,13 +103,11 @@ else()
 endif()
 target_sources(noneuclid_input PRIVATE linux/gpio_common.cpp linux/evdev.cpp linux/input.cpp)
 target_include_directories(noneuclid_input PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(noneuclid_input PUBLIC noneuclid_world PRIVATE noneuclid_warnings)
+target_link_libraries(noneuclid_input PUBLIC noneuclid_world PRIVATE noneuclid_posix noneuclid_warnings)
 # 64-bit directory offsets on 32-bit ARM: readdir() of a large-offset directory (ext4 hashes,
 # and every directory under qemu-arm on a 64-bit host) fails with EOVERFLOW without it.
 target_compile_definitions(noneuclid_input PUBLIC _FILE_OFFSET_BITS=64)
 
-target_link_libraries(noneuclid PRIVATE noneuclid_input)
-target_compile_definitions(noneuclid PRIVATE NONEUCLID_HAVE_INPUT=1)
 
 # The system test's proof that read() allocates nothing (tests/system/input.sh): statically
 # linked, malloc and friends wrapped. Built on request only (tests/system/input-test does).

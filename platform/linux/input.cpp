@@ -1,6 +1,5 @@
-// print_input_events: the poll loop behind `noneuclid buttons`.
+// The board's buttons opened as input sources, and the poll loop behind `noneuclid buttons`.
 #include <poll.h>
-#include <time.h>
 
 #include <cerrno>
 #include <climits>
@@ -12,10 +11,55 @@
 
 namespace noneuclid::platform {
 
-int64_t monotonic_ns() {
-    timespec ts{};
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return static_cast<int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+bool open_board_inputs(const world::Board& b, const std::string& mode, std::vector<std::unique_ptr<InputSource>>& out,
+                       std::string& error) {
+    if (mode == "none") return true;
+    const bool want_gpio = mode == "gpio" || (mode == "auto" && b.has_gpio());
+    const bool want_keys = mode == "evdev" || (mode == "auto" && b.has_keys());
+    if (mode == "gpio" && !b.has_gpio()) {
+        error = "the board " + b.name + " (" + b.file +
+                ") wires no GPIO buttons: add 'gpio = N' to its [[button]] tables, or use --input evdev.";
+        return false;
+    }
+    if (mode == "evdev" && !b.has_keys()) {
+        error = "the board " + b.name + " (" + b.file +
+                ") names no key codes: add 'key = N' to its [[button]] tables, or use --input gpio.";
+        return false;
+    }
+    if (want_gpio) {
+        GpioConfig g;
+        g.chips = b.chips;
+        g.debounce_ms = static_cast<unsigned>(b.debounce_ms);
+        for (const auto& bb : b.buttons)
+            if (bb.gpio >= 0) g.buttons.push_back({bb.control, static_cast<unsigned>(bb.gpio), bb.pin});
+        auto src = open_gpio(g, error);
+        if (!src) {
+            error += ".";
+            return false;
+        }
+        std::fprintf(stderr, "noneuclid: %s\n", src->describe().c_str());
+        out.push_back(std::move(src));
+    }
+    if (want_keys) {
+        EvdevConfig e;
+        e.device = b.evdev_device;
+        e.grab = b.grab;
+        for (const auto& bb : b.buttons)
+            if (bb.key >= 0) e.keys.push_back({bb.control, static_cast<unsigned>(bb.key)});
+        std::string why;
+        auto src = open_evdev(e, why);
+        if (!src) {
+            if (mode == "evdev" || !want_gpio) {
+                error = why + ".";
+                return false;
+            }
+            std::fprintf(stderr, "noneuclid: no keys (%s); the GPIO buttons are enough.\n", why.c_str());
+        } else {
+            std::fprintf(stderr, "noneuclid: %s\n", src->describe().c_str());
+            out.push_back(std::move(src));
+        }
+    }
+    return true;
 }
 
 namespace {
@@ -86,6 +130,22 @@ int print_input_events(InputSource& src, long max_events, double timeout_seconds
                         "check the connection and start again");
         if (!error) errors_in_a_row = 0;
     }
+}
+
+int print_buttons(const world::Board& board, const std::string& input, long events, double timeout) {
+    std::vector<std::unique_ptr<InputSource>> inputs;
+    std::string error;
+    if (!open_board_inputs(board, input, inputs, error)) {
+        std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+        return 2;
+    }
+    if (inputs.empty()) {
+        std::fprintf(stderr, "noneuclid: the board has no buttons to listen to: give it [[button]] tables.\n");
+        return 2;
+    }
+    if (inputs.size() > 1)
+        std::fprintf(stderr, "noneuclid: listening to the first input only; choose with --input gpio or evdev.\n");
+    return print_input_events(*inputs.front(), events, timeout, stdout);
 }
 
 }  // namespace noneuclid::platform

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "app/platform.hpp"  // monotonic_ns: the clock read() and deadline_ns() speak
+#include "world/board.hpp"
 #include "world/controls.hpp"
 
 namespace noneuclid::platform {
@@ -77,7 +79,10 @@ int print_input_events(InputSource& src, long max_events, double timeout_seconds
 // Which libgpiod API this build uses ("1.6.3 (v1 API)", "2.1.3 (v2 API)") or "none".
 const char* gpiod_version();
 
-// CLOCK_MONOTONIC in nanoseconds: the clock read() and deadline_ns() speak, and the frame loop's.
-int64_t monotonic_ns();
+// The board's buttons as input sources: `mode` gpio, evdev, none or auto (GPIO if the board wires
+// any, plus key devices if it names keys and one is present). Says what it opened, one line
+// each, on stderr. False with one sentence in `error`.
+bool open_board_inputs(const world::Board& board, const std::string& mode,
+                       std::vector<std::unique_ptr<InputSource>>& out, std::string& error);
 
 }  // namespace noneuclid::platform

@@ -1,6 +1,6 @@
-// The fbdev frame loop. See kiosk.hpp.
-#include "linux/kiosk.hpp"
-
+// The kiosk as a display (app/display.hpp): the framebuffer (fbdev.hpp), the console it owns
+// for the program's life, and the board's buttons: GPIO lines and evdev keys, polled with the
+// frame's deadline as the timeout, so the loop sleeps until a button or the frame is due.
 #include <poll.h>
 
 #include <cerrno>
@@ -8,117 +8,85 @@
 #include <cstring>
 #include <iterator>
 
+#include "app/platform.hpp"
 #include "linux/fbdev.hpp"
-#include "run_stats.hpp"
-#include "render/session.hpp"
-#include "world/world.hpp"
+#include "linux/input.hpp"
 
 namespace noneuclid::platform {
 namespace {
 
-template <class W>
-int loop(Fbdev& fb, const world::Scene& scene, const KioskOptions& o, std::vector<std::unique_ptr<InputSource>>& inputs,
-         render::ActionRecorder* recorder) {
-    render::SessionOptions so;
-    so.draw.projection = o.projection;
-    so.draw.antialias = o.antialias;
-    so.hud = o.hud;
-    so.scene_name = scene.name.c_str();
-    so.attract = o.attract;
-    render::WorkerPool pool(o.threads);
-    render::Session<W> session(scene, so, render::builtin_font(), recorder, &pool);
+class KioskDisplay final : public app::Display {
+public:
+    bool open(const KioskSpec& spec, std::string& error) {
+        if (!fb_.open(spec.device, error)) {
+            error += ".";
+            return false;
+        }
+        std::fprintf(stderr, "noneuclid: framebuffer %s\n", fb_.describe().c_str());
+        if (!open_board_inputs(spec.board, spec.input, inputs_, error)) return false;
+        if (inputs_.empty()) std::fprintf(stderr, "noneuclid: no buttons: the world runs on its own.\n");
+        console_ = std::make_unique<ConsoleGuard>();
+        std::fprintf(stderr, "noneuclid: %s\n", console_->note.c_str());
+        vsync_pace_ = spec.fps >= 55;
+        return true;
+    }
 
-    constexpr int kMaxFds = 32;
-    pollfd fds[kMaxFds];
-    world::InputEvent events[64];
-    const int64_t period = static_cast<int64_t>(1e9 / o.fps + 0.5);
-    const int64_t start = monotonic_ns();
-    int64_t next = start, fps_since = start;
-    long frames = 0, fps_frames = 0;
-
-    while (!ConsoleGuard::stop_requested && !session.quit && (o.frames == 0 || frames < o.frames)) {
-        const bool vsync_paced = fb.vsync() && o.fps >= 55;  // present() waits for the refresh
-        // Wait for the frame's deadline, handling input as it comes. Always read once, so the
-        // first frame sees the buttons' initial levels.
+    render::Canvas canvas() override { return fb_.back(); }
+    void present() override { fb_.present(); }
+    bool wait(int64_t deadline_ns, app::InputSink& sink) override {
+        // Always read once, so that the first frame sees the buttons' levels at start.
         for (bool first = true;; first = false) {
             int n = 0;
-            for (auto& in : inputs) n += in->fds(fds + n, kMaxFds - n);
+            for (auto& in : inputs_) n += in->fds(fds_ + n, kMaxFds - n);
             const int64_t t = monotonic_ns();
-            int64_t wake = vsync_paced ? t : next;
-            for (auto& in : inputs)
+            int64_t wake = deadline_ns;
+            for (auto& in : inputs_)
                 if (const int64_t d = in->deadline_ns(); d >= 0 && d < wake) wake = d;
             const int timeout_ms = wake <= t ? 0 : static_cast<int>((wake - t + 999999) / 1000000);
             if (!first || n > 0) {
-                if (poll(fds, static_cast<nfds_t>(n), first ? 0 : timeout_ms) < 0 && errno != EINTR) {
-                    std::fprintf(stderr, "noneuclid: waiting for the buttons failed (%s): check the input devices and restart.\n",
+                if (poll(fds_, static_cast<nfds_t>(n), first ? 0 : timeout_ms) < 0 && errno != EINTR) {
+                    std::fprintf(stderr,
+                                 "noneuclid: waiting for the buttons failed (%s): check the input devices and restart.\n",
                                  std::strerror(errno));
-                    return 1;
+                    return false;
                 }
             }
-            if (ConsoleGuard::stop_requested) break;
+            if (ConsoleGuard::stop_requested) return true;
             const int64_t after = monotonic_ns();
-            for (auto& in : inputs) {
-                const int got = in->read(events, static_cast<int>(std::size(events)), after);
-                for (int i = 0; i < got; ++i) session.control(events[i]);
+            for (auto& in : inputs_) {
+                const int got = in->read(events_, static_cast<int>(std::size(events_)), after);
+                for (int i = 0; i < got; ++i) sink.input(events_[i]);
             }
-            if (session.quit || vsync_paced || after >= next) break;
+            if (after >= deadline_ns) return true;
         }
-        if (ConsoleGuard::stop_requested || session.quit) break;
-        session.frame(fb.back());
-        fb.present();
-        ++frames, ++fps_frames;
-        const int64_t t = monotonic_ns();
-        if (t - fps_since >= 500000000) {
-            session.fps = static_cast<double>(fps_frames) * 1e9 / static_cast<double>(t - fps_since);
-            fps_since = t, fps_frames = 0;
-        }
-        next += period;
-        if (t - next > period) next = t;  // after a stall, start again from now
     }
-    if (ConsoleGuard::stop_requested)
-        std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames.\n", ConsoleGuard::stop_signal(), frames);
-    if (o.stats) print_run_stats(frames, static_cast<double>(monotonic_ns() - start) * 1e-9);
-    return 0;
-}
+    bool closing() const override { return ConsoleGuard::stop_requested; }
+    std::string stop_reason() const override {
+        return ConsoleGuard::stop_requested ? "by signal " + std::to_string(ConsoleGuard::stop_signal()) : "";
+    }
+    bool paced_by_refresh() const override { return vsync_pace_ && fb_.vsync(); }
+    bool read_back(app::Picture& out, std::string&) override {
+        out.canvas = fb_.read_back(out.pixels);
+        return true;
+    }
+    const char* legend() const override { return "buttons"; }
+
+private:
+    static constexpr int kMaxFds = 32;
+    Fbdev fb_;
+    std::vector<std::unique_ptr<InputSource>> inputs_;
+    std::unique_ptr<ConsoleGuard> console_;  // made last: restored first
+    bool vsync_pace_ = false;
+    pollfd fds_[kMaxFds];
+    world::InputEvent events_[64];
+};
 
 }  // namespace
 
-int run_fbdev(const world::Scene& scene, const KioskOptions& o, std::vector<std::unique_ptr<InputSource>>& inputs) {
-    Fbdev fb;
-    std::string error;
-    if (!fb.open(o.device, error)) {
-        std::fprintf(stderr, "noneuclid: %s.\n", error.c_str());
-        return 2;
-    }
-    std::fprintf(stderr, "noneuclid: framebuffer %s\n", fb.describe().c_str());
-    std::FILE* rec = nullptr;
-    if (!o.record.empty()) {
-        rec = std::fopen(o.record.c_str(), "w");
-        if (!rec) {
-            std::fprintf(stderr, "noneuclid: cannot write the recording %s (%s): check the directory.\n", o.record.c_str(),
-                         std::strerror(errno));
-            return 2;
-        }
-        std::fprintf(rec, "# noneuclid run: scene %s, engine %s, world time 1/60 s per frame; replay with\n"
-                          "# noneuclid render --scene %s --engine %s --actions THIS_FILE --frames N\n",
-                     scene.name.c_str(), o.engine.c_str(), scene.name.c_str(), o.engine.c_str());
-    }
-    render::FileRecorder recorder(rec);
-    int status = 0;
-    {
-        ConsoleGuard console;
-        std::fprintf(stderr, "noneuclid: %s\n", console.note.c_str());
-        render::ActionRecorder* r = rec ? &recorder : nullptr;
-        if (o.engine == "double") status = loop<world::World<double>>(fb, scene, o, inputs, r);
-        else if (o.engine == "float") status = loop<world::World<float>>(fb, scene, o, inputs, r);
-        else if (o.engine == "paper") status = loop<world::World<double, true>>(fb, scene, o, inputs, r);
-        else status = loop<world::World<fx::fixed>>(fb, scene, o, inputs, r);
-    }
-    if (rec && std::fclose(rec) != 0) {
-        std::fprintf(stderr, "noneuclid: could not finish writing the recording %s: check the disk.\n", o.record.c_str());
-        status = status ? status : 1;
-    }
-    return status;
+std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& error) {
+    auto d = std::make_unique<KioskDisplay>();
+    if (!d->open(spec, error)) return nullptr;
+    return d;
 }
 
 }  // namespace noneuclid::platform

@@ -1,8 +1,9 @@
-#include "desktop/display_choice.hpp"
-
+// Which display `noneuclid run` uses when not told (app/platform.hpp).
 #include <unistd.h>
 
 #include <cstdlib>
+
+#include "app/platform.hpp"
 
 namespace noneuclid::platform {
 

@@ -15,7 +15,10 @@
 
 #include "world/controls.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::app {
+
+using world::Control;
+using world::InputEvent;
 
 struct AttractOptions {
     double idle_seconds = 120;  // 0: never
@@ -96,4 +99,4 @@ private:
     bool held_[4] = {};
 };
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::app

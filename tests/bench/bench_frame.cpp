@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "render/render_scene.hpp"
+#include "render/draw_world.hpp"
 
 namespace {
 

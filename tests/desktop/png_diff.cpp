@@ -1,15 +1,18 @@
-// png_diff A.png B.png: prints how many pixels differ by more than 8 levels in any channel;
-// exit 0 if that is at most 0.5% of the pixels (and the sizes match), 1 otherwise, 2 on a bad
-// file. Used by x11_test.sh to compare the window (read back from the X server) with render.
+// png_diff A.png B.png [--exact]: prints how many pixels differ by more than 8 levels in any
+// channel (with --exact: by anything); exit 0 if that is at most 0.5% of the pixels (--exact:
+// none) and the sizes match, 1 otherwise, 2 on a bad file. Used by x11_test.sh to compare the
+// window (read back from the X server) with render.
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
-#include "desktop/png_file.hpp"
+#include "app/platform.hpp"
 
 int main(int argc, char** argv) {
-    if (argc != 3) {
-        std::fprintf(stderr, "usage: png_diff A.png B.png\n");
+    const bool exact = argc == 4 && std::strcmp(argv[3], "--exact") == 0;
+    if (argc != 3 && !exact) {
+        std::fprintf(stderr, "usage: png_diff A.png B.png [--exact]\n");
         return 2;
     }
     int wa = 0, ha = 0, wb = 0, hb = 0;
@@ -22,17 +25,19 @@ int main(int argc, char** argv) {
         std::printf("sizes differ: %dx%d against %dx%d\n", wa, ha, wb, hb);
         return 1;
     }
+    const int tolerance = exact ? 0 : 8;
     long differ = 0;
     const long pixels = static_cast<long>(wa) * ha;
     for (long i = 0; i < pixels; ++i)
         for (int c = 0; c < 3; ++c)
             if (std::abs(static_cast<unsigned char>(a[static_cast<std::size_t>(i * 3 + c)]) -
-                         static_cast<unsigned char>(b[static_cast<std::size_t>(i * 3 + c)])) > 8) {
+                         static_cast<unsigned char>(b[static_cast<std::size_t>(i * 3 + c)])) > tolerance) {
                 ++differ;
                 break;
             }
-    const bool ok = differ * 200 <= pixels;  // at most 0.5%
-    std::printf("%ld of %ld pixels differ by more than 8 levels (%.3f%%, limit 0.5%%): %s\n", differ, pixels,
-                100.0 * static_cast<double>(differ) / static_cast<double>(pixels), ok ? "same" : "DIFFERENT");
+    const bool ok = exact ? differ == 0 : differ * 200 <= pixels;  // at most 0.5%
+    std::printf("%ld of %ld pixels differ by more than %d levels (%.3f%%, limit %s): %s\n", differ, pixels, tolerance,
+                100.0 * static_cast<double>(differ) / static_cast<double>(pixels), exact ? "none" : "0.5%",
+                ok ? "same" : "DIFFERENT");
     return ok ? 0 : 1;
 }

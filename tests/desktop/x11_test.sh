@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The X11 window in a real X server (Xvfb): open `noneuclid run` on tests/desktop/static.toml
-# (nothing moves), send it the keys 1 (K = -1), p (next projection: stereographic) and h (the
-# HUD, on at start, goes off), read the window back from the X server at exit (--screenshot,
-# XGetImage) and compare it with `noneuclid render` of the same scene at K = -1, stereographic,
-# without HUD. Tolerance: at most 0.5% of the pixels may differ by more than 8 levels in any
-# channel (png_diff); the two paths draw with the same code and options, so in practice 0.
+# The X11 window in a real X server (Xvfb), driven by xdotool:
+#  1. `noneuclid run` on tests/desktop/static.toml (nothing moves), keys 1 (K = -1) and p (the
+#     next projection: stereographic), HUD on; the window read back from the X server at exit
+#     (--screenshot, XGetImage) equals, pixel for pixel, `noneuclid render` of the same scene at
+#     K = -1, stereographic, with the HUD and the keys' legend;
+#  2. `noneuclid run` on the kiosk scene, recording (--record): thrust held for a while, a
+#     turn, K set by 3, the HUD toggled twice, then Esc; `noneuclid render --actions` of the
+#     recording equals the window's last frame, pixel for pixel; and without the thrust it
+#     differs (the comparison can fail).
 #   x11_test.sh NONEUCLID PNG_DIFF SCENE
 set -euo pipefail
 noneuclid=$1 png_diff=$2 scene=$3
@@ -34,12 +37,15 @@ if ! timeout 10 bash -c "until xdpyinfo >/dev/null 2>&1 || { ! command -v xdpyin
     exit 1
 fi
 
-# 600 frames at 60 fps: about 10 s for the keys to arrive, even on a loaded machine.
+window() {  # the window's id, once it is mapped
+    timeout 10 xdotool search --sync --name '^noneuclid$' | head -n 1
+}
+
+# 1. 600 frames at 60 fps: about 10 s for the keys to arrive, even on a loaded machine.
 timeout 60 "$noneuclid" run --display x11 --scene "$scene" --size 480x360 --frames 600 \
     --screenshot "$tmp/x11.png" &
 app_pid=$!
-win=$(timeout 10 xdotool search --sync --name '^noneuclid$' | head -n 1)
-timeout 10 xdotool key --window "$win" 1 p h
+timeout 10 xdotool key --window "$(window)" 1 p
 status=0
 wait "$app_pid" || status=$?
 app_pid=
@@ -47,7 +53,38 @@ if [ "$status" -ne 0 ]; then
     echo "x11_test: noneuclid run exited with status $status" >&2
     exit 1
 fi
-
 timeout 60 "$noneuclid" render --scene "$scene" --size 480x360 --curvature -1 --projection stereographic \
-    --out "$tmp/render.png"
-"$png_diff" "$tmp/x11.png" "$tmp/render.png"
+    --hud --legend keys --out "$tmp/render.png"
+"$png_diff" "$tmp/x11.png" "$tmp/render.png" --exact
+
+# 2. Until Esc; the keys as a visitor would press them.
+timeout 60 "$noneuclid" run --display x11 --scene kiosk --size 400x300 --record "$tmp/run.rec" \
+    --screenshot "$tmp/run.png" &
+app_pid=$!
+win=$(window)
+timeout 10 xdotool keydown --window "$win" Up
+sleep 0.6
+timeout 10 xdotool keyup --window "$win" Up
+timeout 10 xdotool key --window "$win" a a 3 h
+sleep 0.3
+timeout 10 xdotool key --window "$win" h
+sleep 0.3
+timeout 10 xdotool key --window "$win" Escape
+status=0
+wait "$app_pid" || status=$?
+app_pid=
+if [ "$status" -ne 0 ]; then
+    echo "x11_test: noneuclid run (recording) exited with status $status" >&2
+    exit 1
+fi
+for want in "press thrust" "release thrust" "press spherical" "tap hud" "legend keys"; do
+    grep -q "$want" "$tmp/run.rec" || { echo "x11_test: the recording has no '$want':" >&2; cat "$tmp/run.rec" >&2; exit 1; }
+done
+timeout 60 "$noneuclid" render --actions "$tmp/run.rec" --out "$tmp/replay.png"
+"$png_diff" "$tmp/run.png" "$tmp/replay.png" --exact
+grep -v "press thrust" "$tmp/run.rec" > "$tmp/without.rec"
+timeout 60 "$noneuclid" render --actions "$tmp/without.rec" --out "$tmp/without.png"
+if "$png_diff" "$tmp/run.png" "$tmp/without.png" --exact; then
+    echo "x11_test: the replay without the thrust should differ from the run" >&2
+    exit 1
+fi

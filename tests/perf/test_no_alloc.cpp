@@ -12,6 +12,8 @@
 
 #include "render/draw_world.hpp"
 #include "render/hud.hpp"
+#include "app/frame_loop.hpp"
+#include "app/memory_display.hpp"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -96,6 +98,57 @@ TEST(NoAllocation, TheCounterSeesAnAllocation) {
     g_counting = false;
     EXPECT_GE(g_allocations.load(), 1);
     EXPECT_EQ(v.size(), 10u);
+}
+
+}  // namespace
+
+// The frame loop as `noneuclid run` runs it (app::FrameLoop on the headless display, a session
+// with the HUD, attract mode and keys queued each frame): nothing allocated per frame either.
+namespace {
+
+class KeysDisplay final : public app::Display {
+public:
+    render::Canvas canvas() override { return inner_.canvas(); }
+    void present() override { inner_.present(); }
+    bool wait(int64_t, app::InputSink& sink) override {
+        const long f = inner_.presented();
+        sink.input({world::Control::thrust, f % 40 < 20});
+        if (f % 50 == 0) sink.input({world::Control::projection, true}), sink.input({world::Control::projection, false});
+        return true;
+    }
+    bool closing() const override { return false; }
+    bool realtime() const override { return false; }
+    bool read_back(app::Picture& out, std::string& e) override { return inner_.read_back(out, e); }
+    const char* legend() const override { return "keys"; }
+
+private:
+    app::MemoryDisplay inner_{320, 240, render::PixelFormat::rgb565()};
+};
+
+long loop_allocations(app::Engine engine, int threads) {
+    world::Scene scene;
+    EXPECT_TRUE(world::builtin_scene("kiosk", {}, scene));
+    app::SessionOptions so;
+    so.hud = true, so.show_fps = true, so.legend = "keys", so.threads = threads;
+    so.attract = {2, 10, 0.25};  // attract mode comes and goes with the keys
+    const auto session = app::make_session(engine, scene, so, render::builtin_font(), nullptr);
+    KeysDisplay display;
+    app::LoopOptions lo;
+    lo.frames = 400;
+    app::FrameLoop loop(display, *session, nullptr, nullptr, lo);
+    for (int i = 0; i < 3; ++i) loop.tick();  // warm up
+    g_allocations = 0;
+    g_counting = true;
+    long frames = 0;
+    while (loop.tick()) ++frames;
+    g_counting = false;
+    EXPECT_EQ(frames, 397);
+    return g_allocations.load();
+}
+
+TEST(NoAllocation, TheFrameLoopAllocatesNothingPerFrame) {
+    EXPECT_EQ(loop_allocations(app::Engine::fixed, 1), 0);
+    EXPECT_EQ(loop_allocations(app::Engine::double_, 2), 0);
 }
 
 }  // namespace

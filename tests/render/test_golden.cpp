@@ -1,5 +1,7 @@
-// Golden images of the paper's scenes. The goldens in tests/golden/ are rendered by the
-// double engine (tests/golden/regenerate.sh). Two comparisons, pixel by pixel:
+// Golden images of the paper's figures (app/figures.hpp: the table the demo draws). The goldens
+// in tests/golden/ are the demo's pictures by the double engine at 480x480 without the HUD
+// (tests/golden/regenerate.sh), drawn here by the same path (app::render_picture). Two
+// comparisons, pixel by pixel:
 //  - the double engine today against its golden: the same picture, up to 0.05% of the pixels
 //    (a libm on another machine may round a sine differently and move a pixel);
 //  - the fixed-point engine (the device's) against the same golden: an independent engine
@@ -10,50 +12,38 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <span>
 #include <string>
 #include <vector>
 
-#include "desktop/png_file.hpp"
-#include "render/render_scene.hpp"
+#include "app/figures.hpp"
+#include "app/picture.hpp"
+#include "app/platform.hpp"
+#include "app/setup.hpp"
 
 using namespace noneuclid;
 
 namespace {
 
-struct Golden {
-    const char* name;
-    const char* scene;
-    long frames;
-    long timelapse;
-    bool aa;
-};
-const Golden kGoldens[] = {
-    {"fig1", "fig1", 120, 0, false},     {"fig14", "fig14", 600, 40, false}, {"fig15", "fig15", 600, 40, false},
-    {"fig16", "fig16", 120, 15, false},  {"fig17", "fig17", 250, 25, false}, {"kiosk", "kiosk", 60, 0, true},
-};
+using app::Figure;
 
-template <class W>
-std::string render_rgb(const Golden& g) {
-    world::Scene scene;
-    EXPECT_TRUE(world::builtin_scene(g.scene, {}, scene));
-    W w(scene);
-    std::vector<uint32_t> px(480 * 480);
-    const render::Canvas c(px.data(), 480, 480, 480 * 4, render::PixelFormat::xrgb8888());
-    render::RenderJob job;
-    job.frames = g.frames;
-    job.timelapse = g.timelapse;
-    job.draw.antialias = g.aa;
-    render::render_scene(w, c, job);
+std::string render_rgb(const Figure& g, app::Engine engine) {
+    app::Options o = app::defaults(app::Command::render);
+    o.scene = g.scene, o.frames = g.frames, o.timelapse = g.timelapse, o.aa = g.aa, o.engine = engine;
+    o.width = o.height = 480;
+    app::Picture picture;
+    app::render_picture(o, app::load_scene(o), nullptr, render::builtin_font(), picture);
     std::string rgb(480 * 480 * 3, '\0');
-    for (int i = 0; i < 480 * 480; ++i) {
-        rgb[static_cast<std::size_t>(i) * 3] = static_cast<char>(px[static_cast<std::size_t>(i)] >> 16);
-        rgb[static_cast<std::size_t>(i) * 3 + 1] = static_cast<char>(px[static_cast<std::size_t>(i)] >> 8);
-        rgb[static_cast<std::size_t>(i) * 3 + 2] = static_cast<char>(px[static_cast<std::size_t>(i)]);
-    }
+    for (int y = 0; y < 480; ++y)
+        for (int x = 0; x < 480; ++x) {
+            const render::Rgb c = picture.canvas.get(x, y);
+            const std::size_t i = (static_cast<std::size_t>(y) * 480 + static_cast<std::size_t>(x)) * 3;
+            rgb[i] = static_cast<char>(c.r), rgb[i + 1] = static_cast<char>(c.g), rgb[i + 2] = static_cast<char>(c.b);
+        }
     return rgb;
 }
 
-std::string load(const Golden& g) {
+std::string load(const Figure& g) {
     int w = 0, h = 0;
     std::string rgb, err;
     const std::string path = std::string(NONEUCLID_GOLDEN_DIR) + "/" + g.name + ".png";
@@ -97,18 +87,19 @@ Diff compare(const std::string& got, const std::string& want, int tolerance) {
 }
 
 TEST(Golden, TheDoubleEngineRedrawsItsGoldens) {
-    for (const Golden& g : kGoldens) {
-        const Diff d = compare(render_rgb<world::World<double>>(g), load(g), 0);
+    ASSERT_EQ(app::kFigureCount, 6);
+    for (const Figure& g : std::span(app::kFigures, app::kFigureCount)) {
+        const Diff d = compare(render_rgb(g, app::Engine::double_), load(g), 0);
         EXPECT_LE(d.differing, 480 * 480 / 2000) << g.name;  // 0.05%
         RecordProperty(std::string(g.name) + "_double_differing", static_cast<int>(d.differing));
     }
 }
 
 TEST(Golden, TheFixedEngineDrawsTheSamePictures) {
-    for (const Golden& g : kGoldens) {
-        const Diff d = compare(render_rgb<world::World<fx::fixed>>(g), load(g), 24);
-        std::printf("golden %s: fixed engine differs in %ld pixels (%.3f%%), %ld with no match within 1 px\n", g.name,
-                    d.differing, 100.0 * d.differing / (480 * 480), d.unmatched);
+    for (const Figure& g : std::span(app::kFigures, app::kFigureCount)) {
+        const Diff d = compare(render_rgb(g, app::Engine::fixed), load(g), 24);
+        RecordProperty(std::string(g.name) + "_fixed_differing", static_cast<int>(d.differing));
+        RecordProperty(std::string(g.name) + "_fixed_unmatched", static_cast<int>(d.unmatched));
         EXPECT_LE(d.differing, 480 * 480 / 50) << g.name;  // 2%
         EXPECT_LE(d.unmatched, d.differing / 20 + 5) << g.name;
     }

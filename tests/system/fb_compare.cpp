@@ -23,7 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "desktop/png_file.hpp"
+#include "app/platform.hpp"  // read_png
 #include "render/canvas.hpp"
 
 namespace {

@@ -1,0 +1,21 @@
+// write_png and read_png (app/platform.hpp) in a build without libpng: they say so.
+#include "app/platform.hpp"
+
+namespace noneuclid::platform {
+
+namespace {
+const char* const kNoPng =
+    "this build has no PNG support (libpng was not found when it was built): install libpng-dev and rebuild";
+}
+
+bool write_png(const std::string& path, const render::Canvas&, std::string& error) {
+    error = std::string("cannot write ") + path + ": " + kNoPng + ".";
+    return false;
+}
+
+bool read_png(const std::string& path, int&, int&, std::string&, std::string& error) {
+    error = std::string("cannot read ") + path + ": " + kNoPng + ".";
+    return false;
+}
+
+}  // namespace noneuclid::platform

@@ -1,0 +1,22 @@
+// The clock and the process's CPU time (app/platform.hpp), from POSIX.
+#include <sys/resource.h>
+#include <time.h>
+
+#include "app/platform.hpp"
+
+namespace noneuclid::platform {
+
+int64_t monotonic_ns() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<int64_t>(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+CpuTime cpu_time() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    auto seconds = [](timeval t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+    return {seconds(u.ru_utime), seconds(u.ru_stime)};
+}
+
+}  // namespace noneuclid::platform

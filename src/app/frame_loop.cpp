@@ -1,0 +1,74 @@
+#include "app/frame_loop.hpp"
+
+#include <cstdio>
+
+#include "app/platform.hpp"
+
+namespace noneuclid::app {
+
+FrameLoop::FrameLoop(Display& display, Session& session, const Script* script, Recorder* recorder,
+                     const LoopOptions& o)
+    : display_(display), session_(session), recorder_(recorder), o_(o) {
+    if (script) player_ = ScriptPlayer(script->events);
+    period_ = static_cast<int64_t>(1e9 / (o_.fps > 0 ? o_.fps : 60) + 0.5);
+    start_ = next_ = fps_since_ = platform::monotonic_ns();
+}
+
+bool FrameLoop::tick() {
+    if (failed_ || (o_.frames > 0 && frames_ >= o_.frames)) return false;
+    // Input until the frame is due: now, for a display that paces itself or that nobody watches.
+    const bool sleep = display_.realtime() && !display_.paced_by_refresh();
+    if (!display_.wait(sleep ? next_ : 0, *this)) {
+        failed_ = true;
+        return false;
+    }
+    if (display_.closing() || session_.quit()) return false;
+    session_.play_due(player_);
+    const render::Canvas canvas = display_.canvas();
+    if (recorder_ && (canvas.width() != width_ || canvas.height() != height_)) {
+        width_ = canvas.width(), height_ = canvas.height();
+        recorder_->setting("size", std::to_string(width_) + "x" + std::to_string(height_));
+    }
+    session_.step();
+    session_.draw(canvas);
+    display_.present();
+    ++frames_, ++fps_frames_;
+    const int64_t t = platform::monotonic_ns();
+    if (t - fps_since_ >= 500000000) {
+        session_.set_fps(static_cast<double>(fps_frames_) * 1e9 / static_cast<double>(t - fps_since_));
+        fps_since_ = t, fps_frames_ = 0;
+    }
+    next_ += period_;
+    if (t - next_ > period_) next_ = t;  // after a stall, start again from now
+    return true;
+}
+
+int FrameLoop::finish() {
+    int status = failed_ ? 1 : 0;
+    const std::string reason = display_.stop_reason();
+    if (!reason.empty()) std::fprintf(stderr, "noneuclid: stopped %s after %ld frames.\n", reason.c_str(), frames_);
+    if (recorder_) recorder_->setting("frames", std::to_string(frames_));
+    if (!o_.screenshot.empty()) {
+        Picture shot;
+        std::string error;
+        if (!display_.read_back(shot, error) || !platform::write_png(o_.screenshot, shot.canvas, error)) {
+            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+            status = status ? status : 1;
+        } else {
+            std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, frame %ld, K = %.3f)\n", o_.screenshot.c_str(),
+                         shot.canvas.width(), shot.canvas.height(), session_.frame(), session_.curvature());
+        }
+    }
+    if (o_.stats) {
+        const double wall = static_cast<double>(platform::monotonic_ns() - start_) * 1e-9;
+        const platform::CpuTime cpu = platform::cpu_time();
+        const std::string note = display_.stats_note();
+        std::fprintf(stderr,
+                     "noneuclid: %ld frames in %.2f s (%.1f fps), CPU %.2f s user + %.2f s system = %.1f%% of one core%s%s\n",
+                     frames_, wall, wall > 0 ? static_cast<double>(frames_) / wall : 0.0, cpu.user, cpu.system,
+                     wall > 0 ? 100 * (cpu.user + cpu.system) / wall : 0.0, note.empty() ? "" : ", ", note.c_str());
+    }
+    return status;
+}
+
+}  // namespace noneuclid::app

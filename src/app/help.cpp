@@ -1,0 +1,83 @@
+// `noneuclid --help` and the version.
+#include <cstdio>
+
+#include "app/commands.hpp"
+
+namespace noneuclid::app {
+
+const char* version() { return NONEUCLID_VERSION; }
+
+void print_help() {
+    std::fputs(
+        "usage: noneuclid [COMMAND] [OPTIONS]\n"
+        "\n"
+        "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin, Child & He\n"
+        "(2019): bodies fly through a spherical, flat or hyperbolic world while K changes.\n"
+        "\n"
+        "commands:\n"
+        "  run        a scene live: an X11 window when DISPLAY is set, the framebuffer and the\n"
+        "             board's buttons on a console (the kiosk), else the headless PNG display\n"
+        "  render     run a scene and write its last frame as a PNG picture\n"
+        "  dump       run a scene and write its state as JSON Lines, one line a frame\n"
+        "  demo       the kiosk's picture and the paper's figures as PNG files in ./out; what\n"
+        "             the program does when given no command\n"
+        "  accuracy   every fixed-point function against std:: double and the engines at the\n"
+        "             screen, as tables; exit status 1 if a row misses its bound\n"
+        "  buttons    print each press and release of the board's buttons (wiring check)\n"
+        "\n"
+        "the world (run, render, dump):\n"
+        "  --scene NAME|FILE  built-in kiosk, fig1, fig14, fig15, fig16, fig17, stress, or a\n"
+        "                     TOML scene file (default kiosk; run --display fbdev: the board's)\n"
+        "  --curvature K      start at this K instead of the scene's, -1 <= K <= 1\n"
+        "  --engine E         fixed (the device's, default), double, float, or paper (the\n"
+        "                     paper's formulas, literally)\n"
+        "  --actions FILE     timed presses and releases, or a recording (run --record): its\n"
+        "                     settings are defaults under the command line's options\n"
+        "  --frames N         steps after the first frame (default 60; run: until closed, png\n"
+        "                     600)\n"
+        "  --projection P     equidistant (default), stereographic, gnomonic, orthographic,\n"
+        "                     lambert\n"
+        "  --size WxH         canvas, window or PNG size in pixels (default 800x480)\n"
+        "  --bodies N, --vertices N, --tessellation N   the stress scene (200, 8, 8)\n"
+        "  --dt S             render, dump: seconds a step (default 1/60; run: always 1/60)\n"
+        "\n"
+        "the picture (run, render):\n"
+        "  --aa, --no-aa      anti-aliased lines (default off; the kiosk: the board's)\n"
+        "  --hud, --no-hud    K, the scene and the controls over the picture (run: on)\n"
+        "  --font F           the HUD's font: builtin or a PSF console font file (default:\n"
+        "                     $NONEUCLID_FONT, else Terminus or Fixed from\n"
+        "                     /usr/share/consolefonts, else builtin)\n"
+        "  --legend L         the HUD's controls line: keys or buttons (default: the display's)\n"
+        "  --format F         xrgb8888 (default), rgb565, rgb888 (render; run's png display)\n"
+        "  --out FILE.png     render: where to write the picture (required)\n"
+        "  --width PX         render: line width in pixels (default 1)\n"
+        "  --timelapse EVERY  render: every EVERY-th frame's bodies over the earlier ones\n"
+        "\n"
+        "run:\n"
+        "  --display D        x11, fbdev, fbdev:/dev/fbN, or png (headless: writes the last\n"
+        "                     frame to --screenshot, default out/run.png)\n"
+        "  --record FILE      write every control as it took effect, with the settings:\n"
+        "                     render --actions FILE draws the last frame again, bit for bit\n"
+        "  --screenshot F     at the end, what the display shows, as a PNG\n"
+        "  --threads N        draw on N threads (the same pixels; default 1, or the board's)\n"
+        "  --attract SECONDS  attract mode after this long without input (0: off, the default;\n"
+        "                     the kiosk: the board's, 120)\n"
+        "  --fps CAP          frame rate cap (default 60); world time is 1/60 s a frame\n"
+        "  --stats            at the end: frames, wall time, CPU; the frame rate on the HUD\n"
+        "  --board NAME|FILE  fbdev: rpi-zero2w, rpi3, rpi4, rpi5, generic or a board file\n"
+        "                     (default: detected from the device-tree model)\n"
+        "  --input I          fbdev: gpio, evdev, none or auto (default: the board's buttons)\n"
+        "\n"
+        "demo: --out-dir DIR (default out), --engine E, --size WxH, --no-hud\n"
+        "accuracy: --samples N (262144), --random N (65536), --seed S (20190101)\n"
+        "buttons: --board, --input gpio|evdev|auto, --events N, --timeout SECONDS\n"
+        "\n"
+        "keys (run on a desktop): arrows or WASD fly, + and - change K, 1 2 3 set K to -1, 0,\n"
+        "+1, P the next projection, H the HUD, R reset, Esc quits.\n"
+        "\n"
+        "  -h, --help         this help\n"
+        "  --version          the version\n",
+        stdout);
+}
+
+}  // namespace noneuclid::app

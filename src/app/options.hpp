@@ -1,0 +1,73 @@
+// The options of the world commands (dump, render, run): one struct, one parser, and which
+// command takes which option. A recording's settings (app/script.hpp) are these options too:
+// the commands layer them as built-in defaults, then the board's (the kiosk), then the
+// recording's, then the command line's, each over the last.
+#pragma once
+
+#include <string>
+
+#include "app/args.hpp"
+#include "app/engine.hpp"
+#include "app/script.hpp"
+#include "world/board.hpp"
+#include "world/scene.hpp"
+
+namespace noneuclid::app {
+
+enum class Command { dump, render, run };
+
+struct Options {
+    // The world (dump, render, run)
+    std::string scene = "kiosk";
+    bool has_curvature = false;
+    double curvature = 0;
+    Engine engine = Engine::fixed;
+    std::string actions;
+    world::SceneParams params;
+    long frames = 60;           // run: 0, until closed
+    double dt = 1.0 / 60;       // dump, render; run steps 1/60 s a frame
+    int width = 800, height = 480;
+    geo::Projection projection = geo::Projection::azimuthal_equidistant;
+    // The picture (render, run)
+    render::PixelFormat format = render::PixelFormat::xrgb8888();
+    bool aa = false;
+    bool hud = false;           // run: true
+    std::string font;           // "" the default, "builtin", or a PSF file
+    std::string legend;         // keys or buttons; "" the display's (render: buttons)
+    double line_width = 1;      // render
+    long timelapse = 0;         // render
+    std::string out;            // render
+    // A live run
+    std::string display;        // "" chosen, x11, fbdev, png
+    std::string device;         // fbdev:DEVICE ("" the board's)
+    std::string board, input = "auto", record, screenshot;
+    double attract = 0;         // idle seconds before attract mode; 0 off
+    double sweep = 40;          // attract mode's sweep of K from -1 to +1, seconds (the board's)
+    int threads = 1;
+    double fps = 60;
+    bool stats = false;
+    bool size_given = false;    // --size or a recording's size (the window's, else the board's)
+};
+
+// The defaults of each command.
+Options defaults(Command c);
+// Reads one option `opt` (its value from `args`) into `o`; false if `c` has no such option.
+bool parse_option(Args& args, const std::string& opt, Options& o, Command c);
+// Reads every word of `args` as an option of `c` (a UsageError for one it has not).
+void parse_options(Args& args, Options& o, Command c);
+// A recording's settings over `o`: a bad one is a UsageError naming the file and line.
+void apply_settings(const Script& script, Options& o, Command c);
+// The kiosk board's [display] defaults over `o`.
+void apply_board(const world::Board& b, Options& o);
+
+// The command line, with a recording's settings (and, for the kiosk, a board's) under it: the
+// defaults, `board` if given, the settings of the --actions file if any (loaded into `script`),
+// then the command line. A bad word or file is a UsageError.
+Options layered_options(int argc, char** argv, int first, Command c, Script& script,
+                        const world::Board* board = nullptr);
+
+const char* command_name(Command c);
+// The engine named `text`, or a UsageError naming `opt`.
+Engine engine_value(const std::string& opt, const std::string& text);
+
+}  // namespace noneuclid::app

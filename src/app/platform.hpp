@@ -1,0 +1,95 @@
+// What the app asks of the platform, as functions each platform implements (raylib's split:
+// the core declares them, a platform file defines them). platform/ holds the definitions; a
+// backend that is not built gets a stub that says so in one sentence, so the command line needs
+// no #if. Declarations only: no OS header here.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/display.hpp"
+#include "render/canvas.hpp"
+#include "render/font.hpp"
+#include "world/board.hpp"
+
+namespace noneuclid::platform {
+
+// ---- the clock and the process (platform/posix) -------------------------------------------
+
+// A monotonic clock in nanoseconds: what Display::wait's deadlines speak.
+int64_t monotonic_ns();
+// CPU seconds this process has used so far.
+struct CpuTime {
+    double user = 0, system = 0;
+};
+CpuTime cpu_time();
+
+// ---- which display `run` uses when not told ------------------------------------------------
+
+enum class DisplayKind { x11, fbdev, png };
+struct DisplayChoice {
+    DisplayKind display = DisplayKind::png;
+    std::string reason;  // "because ..." for the one line the program prints
+};
+// An X11 window when $DISPLAY is set, the framebuffer when /dev/fb0 exists and stdin is a
+// terminal (a console), the headless PNG display otherwise.
+DisplayChoice choose_display();
+
+// ---- displays -------------------------------------------------------------------------------
+
+struct WindowSpec {
+    int width = 800, height = 480;  // the window's first size
+};
+// The X11 window (platform/desktop/x11_display.cpp). Null, with one sentence in `error`, when it
+// cannot be opened or this build has none.
+std::unique_ptr<app::Display> open_window(const WindowSpec& spec, std::string& error);
+
+struct KioskSpec {
+    std::string device = "/dev/fb0";  // the framebuffer
+    double fps = 60;                  // the loop's cap: vsync paces only at >= 55
+    world::Board board;               // the buttons (GPIO lines, evdev keys)
+    std::string input = "auto";       // gpio, evdev, none or auto
+};
+// The kiosk (platform/linux/kiosk_display.cpp): the framebuffer, the console it owns, the
+// board's GPIO buttons and evdev keys. Prints what it opened, one line each, on stderr.
+std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& error);
+
+// ---- files ----------------------------------------------------------------------------------
+
+// Writes `canvas` to `path` as an 8-bit RGB PNG. False with one sentence in `error`.
+bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error);
+// Reads an 8-bit RGB or RGBA PNG into `rgb` (3 bytes a pixel, rows packed).
+bool read_png(const std::string& path, int& width, int& height, std::string& rgb, std::string& error);
+
+// A font with the bytes it points into (move-only: font.glyphs points into bytes).
+struct LoadedFont {
+    std::vector<uint8_t> bytes;
+    render::Font font;
+    std::string source;  // the file's path, or "built-in 6x8"
+
+    LoadedFont() = default;
+    LoadedFont(LoadedFont&&) noexcept = default;
+    LoadedFont& operator=(LoadedFont&&) noexcept = default;
+    LoadedFont(const LoadedFont&) = delete;
+    LoadedFont& operator=(const LoadedFont&) = delete;
+};
+// The HUD's font. `choice`: "builtin", a PSF file (gzip-compressed or not), or "" for the
+// default: $NONEUCLID_FONT if set, else a Terminus or Fixed console font from
+// /usr/share/consolefonts, else the built-in one. False with one sentence in `error` when a
+// font asked for by name cannot be read; the default never fails.
+bool hud_font(const std::string& choice, LoadedFont& out, std::string& error);
+
+// ---- the kiosk's board and buttons (platform/linux) --------------------------------------
+
+// `spec` is a board file's path or a board name (rpi4, generic, ...); "" detects the board from
+// the machine's device-tree model (generic when none matches). `note` says which and why.
+bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error);
+
+// `noneuclid buttons`: prints each press and release of the board's buttons (`input`: gpio,
+// evdev or auto) to stdout, "press thrust", until `events` events (0: no limit) or `timeout`
+// seconds (0: none). Returns the exit status; errors are one sentence on stderr.
+int print_buttons(const world::Board& board, const std::string& input, long events, double timeout);
+
+}  // namespace noneuclid::platform

@@ -1,0 +1,27 @@
+// Writes a recording (app/script.hpp's format) as a run goes: the settings to replay it with
+// first, then every control as it takes effect, with the world time it took effect at. The
+// session calls it; nothing here reads a clock.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include "app/script.hpp"
+
+namespace noneuclid::app {
+
+class Recorder {
+public:
+    // Writes to `f` (not owned; null: records nothing).
+    explicit Recorder(std::FILE* f) : f_(f) {}
+    void comment(const std::string& text);
+    void setting(const char* key, const std::string& value);
+    void event(double time, ScriptEvent::Kind kind, world::Control control = world::Control::thrust);
+    // False once a write has failed (a full disk): the caller says so at the end.
+    bool ok() const { return !f_ || !std::ferror(f_); }
+
+private:
+    std::FILE* f_;
+};
+
+}  // namespace noneuclid::app

@@ -1,0 +1,111 @@
+#include "app/script.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace noneuclid::app {
+
+namespace {
+const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size", "format", "aa",
+                                    "hud",   "font",      "legend", "frames",     nullptr};
+
+bool is_setting(const std::string& word) {
+    for (const char* const* k = kSettingKeys; *k; ++k)
+        if (word == *k) return true;
+    return false;
+}
+
+std::string trim(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t\r");
+    if (a == std::string::npos) return {};
+    return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+std::string control_list() {
+    std::string names;
+    for (int i = 0; i < world::kControlCount; ++i) {
+        const auto c = static_cast<world::Control>(i);
+        if (c == world::Control::quit) continue;
+        names += std::string(names.empty() ? "" : ", ") + world::control_name(c);
+    }
+    return names;
+}
+}  // namespace
+
+const char* const* setting_keys() { return kSettingKeys; }
+
+std::string ScriptError::to_string() const {
+    std::string s = file;
+    if (line > 0) s.append(1, ':').append(std::to_string(line));
+    return s.append(": ").append(message);
+}
+
+bool parse_script(const std::string& text, const std::string& file, Script& out, ScriptError& error) {
+    out = Script{};
+    out.file = file;
+    std::istringstream in(text);
+    std::string raw;
+    long line = 0;
+    auto fail = [&](const std::string& m) {
+        error = {file, line, m};
+        return false;
+    };
+    while (std::getline(in, raw)) {
+        ++line;
+        const std::string content = trim(raw.substr(0, raw.find('#')));
+        std::istringstream words(content);
+        std::string first;
+        if (!(words >> first)) continue;  // blank or comment
+        if (is_setting(first)) {
+            const std::string value = trim(content.substr(first.size()));
+            if (value.empty()) return fail("the setting '" + first + "' needs a value");
+            out.settings.push_back({first, value, line});
+            continue;
+        }
+        char* end = nullptr;
+        const double time = std::strtod(first.c_str(), &end);
+        if (*end != '\0' || !std::isfinite(time) || time < 0) {
+            std::string keys;
+            for (const char* const* k = kSettingKeys; *k; ++k) keys += std::string(keys.empty() ? "" : ", ") + *k;
+            return fail("expected a time in seconds (a number >= 0) or a setting (" + keys + ") first, found '" + first +
+                        "'");
+        }
+        std::string kind, what, extra;
+        words >> kind >> what;
+        ScriptEvent e;
+        e.time = time;
+        if (kind == "attract") {
+            if (what == "on") e.kind = ScriptEvent::attract_on;
+            else if (what == "off") e.kind = ScriptEvent::attract_off;
+            else return fail("expected on or off after 'attract', found '" + what + "'");
+        } else {
+            if (kind == "press") e.kind = ScriptEvent::press;
+            else if (kind == "release") e.kind = ScriptEvent::release;
+            else if (kind == "tap") e.kind = ScriptEvent::tap;
+            else return fail("expected press, release, tap or attract after the time, found '" + kind + "'");
+            if (!world::parse_control(what, e.control) || e.control == world::Control::quit)
+                return fail("expected a control (" + control_list() + "), found '" + what + "'");
+        }
+        if (words >> extra) return fail("unexpected '" + extra + "' after '" + what + "'");
+        out.events.push_back(e);
+    }
+    std::stable_sort(out.events.begin(), out.events.end(),
+                     [](const ScriptEvent& a, const ScriptEvent& b) { return a.time < b.time; });
+    return true;
+}
+
+bool load_script(const std::string& path, Script& out, ScriptError& error) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = {path, 0, "cannot read the actions file: check the path"};
+        return false;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_script(text.str(), path, out, error);
+}
+
+}  // namespace noneuclid::app

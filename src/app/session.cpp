@@ -1,0 +1,187 @@
+// Session<W> for each engine (see session.hpp).
+#include "app/session.hpp"
+
+#include <iterator>
+
+#include "app/recorder.hpp"
+#include "render/hud.hpp"
+#include "render/parallel.hpp"
+
+namespace noneuclid::app {
+namespace {
+
+template <class W>
+class EngineSession final : public Session {
+public:
+    using T = typename W::scalar;
+
+    EngineSession(const world::Scene& scene, const SessionOptions& o, const render::Font& font, Recorder* recorder)
+        : world_(scene),
+          options_(o),
+          font_(font),
+          recorder_(recorder),
+          pool_(o.threads),
+          autopilot_(o.attract, scene.curvature_rate),
+          dt_(o.dt) {
+        scratch_.prepare(world_);
+        if (pool_.size() > 1) parallel_.prepare(world_, pool_);
+    }
+
+    void queue(world::InputEvent e) override {
+        if (e.control == world::Control::quit) {
+            if (e.pressed) quit_ = true;
+            return;
+        }
+        if (queued_ == kQueue) flush();  // a flood of input: the same world time either way
+        queue_[queued_++] = e;
+    }
+
+    void play(const ScriptEvent& e) override {
+        switch (e.kind) {
+            case ScriptEvent::attract_on:
+            case ScriptEvent::attract_off:
+                replayed_attract_ = e.kind == ScriptEvent::attract_on;
+                record(e.kind);
+                return;
+            case ScriptEvent::press: control({e.control, true}); return;
+            case ScriptEvent::release: control({e.control, false}); return;
+            case ScriptEvent::tap:
+                control({e.control, true});
+                control({e.control, false});
+                return;
+        }
+    }
+
+    void step() override {
+        flush();
+        world::InputEvent ap[8];
+        if (user_held_any()) autopilot_.interrupt(world_.time, ap);  // a held button is not idle
+        const bool was = autopilot_.active();
+        const int n = autopilot_.frame(world_.time, static_cast<double>(world_.K), ship_speed(), ap);
+        if (!was && autopilot_.active()) record(ScriptEvent::attract_on);
+        for (int i = 0; i < n; ++i) apply(ap[i]);
+        world_.step(dt_);
+    }
+
+    void draw_world(const render::Canvas& c, Layers layers, bool backdrop) override {
+        render::DrawOptions o = options_.draw;
+        if (layers == Layers::bodies) o.grids = false;
+        if (layers == Layers::backdrop_and_grids) o.bodies = false;
+        if (pool_.size() > 1)
+            render::draw_world(c, world_, o, parallel_, pool_, backdrop);
+        else
+            render::draw_world(c, world_, o, scratch_, backdrop);
+    }
+
+    void draw_hud(const render::Canvas& c) override {
+        if (!options_.hud) return;
+        render::HudInfo info;
+        info.K = static_cast<double>(world_.K);
+        info.fps = options_.show_fps ? fps_ : 0;
+        info.scene = options_.scene_name.c_str();
+        info.projection = geo::projection_name(options_.draw.projection);
+        info.controls = autopilot_.active() || replayed_attract_ ? kAttractLegend : options_.legend.c_str();
+        render::draw_hud(c, font_, info);
+    }
+
+    void dump(int width, int height, std::string& line) const override {
+        world::DumpOptions o;
+        o.width = width, o.height = height, o.projection = options_.draw.projection;
+        world::dump_frame(world_, o, line);
+    }
+
+    double time() const override { return world_.time; }
+    long frame() const override { return world_.frame; }
+    double curvature() const override { return static_cast<double>(world_.K); }
+    bool quit() const override { return quit_; }
+    void set_fps(double fps) override { fps_ = fps; }
+    const SessionOptions& options() const override { return options_; }
+
+private:
+    static constexpr int kQueue = 64;
+
+    void flush() {
+        for (int i = 0; i < queued_; ++i) control(queue_[i]);
+        queued_ = 0;
+    }
+    // A button, key or scripted event: it ends attract mode (the autopilot's held controls are
+    // released and the world reset first), then takes effect.
+    void control(world::InputEvent e) {
+        world::InputEvent ap[8];
+        if (e.pressed || user_held_any()) {
+            const int n = autopilot_.interrupt(world_.time, ap);
+            if (n > 0) record(ScriptEvent::attract_off);
+            for (int i = 0; i < n; ++i) apply(ap[i]);
+        }
+        user_held_[static_cast<int>(e.control)] = e.pressed;
+        apply(e);
+    }
+    // Takes effect and is recorded: a world action when it changes something (a press of what
+    // is held is not), a view control on its press.
+    void apply(world::InputEvent e) {
+        world::Action a{};
+        if (world::control_action(e.control, a)) {
+            if (e.pressed == world_.held(a) && !world::acts_on_press(a)) return;
+            record(e.pressed ? ScriptEvent::press : ScriptEvent::release, e.control);
+            if (e.pressed) world_.press(a);
+            else world_.release(a);
+            return;
+        }
+        if (!e.pressed) return;
+        switch (e.control) {
+            case world::Control::projection: {
+                const int count = static_cast<int>(std::size(geo::kProjections));
+                int i = 0;
+                while (i < count && geo::kProjections[i] != options_.draw.projection) ++i;
+                options_.draw.projection = geo::kProjections[(i + 1) % count];
+                record(ScriptEvent::tap, e.control);
+                break;
+            }
+            case world::Control::hud:
+                options_.hud = !options_.hud;
+                record(ScriptEvent::tap, e.control);
+                break;
+            case world::Control::quit: quit_ = true; break;
+            default: break;
+        }
+    }
+    void record(ScriptEvent::Kind kind, world::Control c = world::Control::thrust) {
+        if (recorder_) recorder_->event(world_.time, kind, c);
+    }
+    bool user_held_any() const {
+        for (bool h : user_held_)
+            if (h) return true;
+        return false;
+    }
+    double ship_speed() const {
+        for (const auto& b : world_.bodies)
+            if (b.desc->controlled) return static_cast<double>(b.speed);
+        return 1e9;  // nothing to fly: never thrust
+    }
+
+    W world_;
+    SessionOptions options_;
+    const render::Font& font_;
+    Recorder* recorder_;
+    render::WorkerPool pool_;
+    Autopilot autopilot_;
+    T dt_;
+    render::DrawScratch<T> scratch_;
+    render::ParallelScratch<T> parallel_;
+    world::InputEvent queue_[kQueue];
+    int queued_ = 0;
+    bool user_held_[world::kControlCount] = {};
+    bool quit_ = false, replayed_attract_ = false;
+    double fps_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
+                                      const render::Font& font, Recorder* recorder) {
+    return with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
+        return std::make_unique<EngineSession<W>>(scene, options, font, recorder);
+    });
+}
+
+}  // namespace noneuclid::app

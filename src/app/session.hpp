@@ -1,0 +1,86 @@
+// One running world and how it is shown: the world on an engine, the view (projection, HUD),
+// the controls in (live buttons and keys, scripted events, the attract-mode autopilot), one
+// step of world time and one drawn frame out. Every display's frame loop (app/frame_loop.hpp)
+// and the batch commands (render, dump) run a Session, so a key does the same thing
+// everywhere and a recording replays bit for bit. Allocates nothing per frame.
+//
+// Order within a frame: the controls due (queued live input, then the autopilot's), each
+// reported to the recorder with the world time, then one step, then the picture. Scripted
+// events are played by the caller at their time, before the step (ScriptPlayer).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "app/autopilot.hpp"
+#include "app/engine.hpp"
+#include "app/script.hpp"
+#include "render/canvas.hpp"
+#include "render/draw_world.hpp"
+#include "render/font.hpp"
+#include "world/dump.hpp"
+#include "world/scene.hpp"
+
+namespace noneuclid::app {
+
+class Recorder;
+
+struct SessionOptions {
+    render::DrawOptions draw;
+    bool hud = true;
+    bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
+    std::string scene_name;
+    std::string legend;           // the HUD's controls line
+    AttractOptions attract{0, 40, 0.25};  // idle_seconds 0: off
+    int threads = 1;              // drawing threads (a pool started once); the same pixels
+    double dt = 1.0 / 60;         // world seconds per step
+};
+
+// What Session::draw_world draws: everything, or a time-lapse's layers.
+enum class Layers { all, bodies, backdrop_and_grids };
+
+class Session {
+public:
+    virtual ~Session() = default;
+
+    // Live input (a display's buttons and keys): applied at the start of the next step, so a
+    // recording holds exactly what the frames saw. quit acts at once.
+    virtual void queue(world::InputEvent e) = 0;
+    // Scripted input at its time (an actions file): applied now.
+    virtual void play(const ScriptEvent& e) = 0;
+    // Plays every event of `player` due by the world time now.
+    void play_due(ScriptPlayer& player) {
+        while (const ScriptEvent* e = player.next_due(time())) play(*e);
+    }
+    // The queued input, the autopilot, one step of dt.
+    virtual void step() = 0;
+    // The world (no HUD) in `layers`; with backdrop false, over what the canvas holds.
+    virtual void draw_world(const render::Canvas& c, Layers layers = Layers::all, bool backdrop = true) = 0;
+    // The HUD, if it is on.
+    virtual void draw_hud(const render::Canvas& c) = 0;
+    void draw(const render::Canvas& c) {
+        draw_world(c);
+        draw_hud(c);
+    }
+    // One JSON Lines frame of the world (`noneuclid dump`), for a canvas of this size.
+    virtual void dump(int width, int height, std::string& line) const = 0;
+
+    virtual double time() const = 0;       // world seconds so far
+    virtual long frame() const = 0;        // steps taken
+    virtual double curvature() const = 0;  // K now
+    virtual bool quit() const = 0;         // a quit control came
+    virtual void set_fps(double fps) = 0;  // shown by the HUD with show_fps
+    virtual const SessionOptions& options() const = 0;  // as now (P and H change them)
+};
+
+// A session of `scene` on `engine`, its drawing threads started. `font` (the HUD's) and
+// `recorder` (may be null) must outlive it.
+std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
+                                      const render::Font& font, Recorder* recorder);
+
+// The HUD legends: the desktop's keys, the kiosk's buttons.
+inline constexpr const char* kKeysLegend = "arrows/WASD  +/- K  1 2 3 K=-1,0,1  P projection  H HUD  R reset  Esc";
+inline constexpr const char* kButtonsLegend = "thrust  left/right  curvature +/-  preset  reset";
+inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
+
+}  // namespace noneuclid::app

@@ -1,0 +1,81 @@
+#include "app/setup.hpp"
+
+#include <filesystem>
+#include <system_error>
+
+#include "app/commands.hpp"
+#include "world/scene_file.hpp"
+
+namespace noneuclid::app {
+
+world::Scene load_scene(const Options& o) {
+    world::Scene scene;
+    if (!world::builtin_scene(o.scene, o.params, scene)) {
+        world::SceneError err;
+        if (!world::load_scene_file(o.scene, scene, err)) {
+            if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos) {
+                std::string names;
+                for (const char* const* n = world::builtin_scene_names(); *n; ++n)
+                    names += std::string(names.empty() ? "" : ", ") + *n;
+                usage_error("no built-in scene '" + o.scene + "' and no scene file by that name: the built-in scenes are " +
+                            names + ".");
+            }
+            usage_error(err.to_string());
+        }
+    }
+    if (o.has_curvature) scene.curvature = o.curvature;
+    return scene;
+}
+
+platform::LoadedFont load_font(const Options& o) {
+    platform::LoadedFont font;
+    std::string error;
+    if (!platform::hud_font(o.font, font, error)) usage_error(error);
+    return font;
+}
+
+std::string font_setting(const platform::LoadedFont& f) {
+    return f.bytes.empty() ? std::string("builtin") : f.source;
+}
+
+void record_settings(Recorder& rec, const Options& o, const std::string& display, const platform::LoadedFont& font,
+                     const render::PixelFormat& format) {
+    rec.comment(std::string("noneuclid ") + version() + " run on the " + display + " display; replay with");
+    rec.comment("  noneuclid render --actions THIS_FILE --out replay.png");
+    std::error_code ec;
+    const bool file = o.scene.find('/') != std::string::npos || o.scene.ends_with(".toml");
+    rec.setting("scene", file ? std::filesystem::absolute(o.scene, ec).string() : o.scene);
+    if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
+    rec.setting("engine", engine_name(o.engine));
+    rec.setting("projection", geo::projection_name(o.projection));
+    rec.setting("aa", o.aa ? "on" : "off");
+    rec.setting("hud", o.hud ? "on" : "off");
+    rec.setting("legend", o.legend.empty() ? "buttons" : o.legend);
+    rec.setting("font", font_setting(font));
+    for (render::PixelFormat f :
+         {render::PixelFormat::xrgb8888(), render::PixelFormat::rgb565(), render::PixelFormat::rgb888()})
+        if (f.bits_per_pixel == format.bits_per_pixel && f.red.offset == format.red.offset &&
+            f.red.length == format.red.length && f.green.offset == format.green.offset &&
+            f.green.length == format.green.length && f.blue.offset == format.blue.offset &&
+            f.blue.length == format.blue.length)
+            rec.setting("format", f.name);
+    if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");
+}
+
+SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {
+    SessionOptions so;
+    so.draw.projection = o.projection;
+    so.draw.antialias = o.aa;
+    so.draw.line_width = static_cast<int32_t>(o.line_width * render::kSub + 0.5);
+    so.hud = o.hud;
+    so.show_fps = o.stats;
+    so.scene_name = scene.name;
+    so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
+    so.attract.idle_seconds = o.attract;
+    so.attract.sweep_seconds = o.sweep;
+    so.threads = o.threads;
+    so.dt = o.dt;
+    return so;
+}
+
+}  // namespace noneuclid::app

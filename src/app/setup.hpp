@@ -1,0 +1,31 @@
+// What the world commands share between reading their options and running: the scene, the
+// HUD's font, the session's options.
+#pragma once
+
+#include <string>
+
+#include "app/options.hpp"
+#include "app/recorder.hpp"
+#include "app/platform.hpp"
+#include "app/session.hpp"
+#include "world/scene.hpp"
+
+namespace noneuclid::app {
+
+// The scene o.scene names (built in, or a TOML file), at o.curvature if given. A name that is
+// neither, or a bad file, is a UsageError (one sentence, with file:line:column for a file).
+world::Scene load_scene(const Options& o);
+// The HUD's font (o.font: "", "builtin" or a file); a font asked for that cannot be read is a
+// UsageError.
+platform::LoadedFont load_font(const Options& o);
+// The font as a setting: "builtin" or its file.
+std::string font_setting(const platform::LoadedFont& f);
+// The settings a recording starts with (o's, with the legend resolved): with them
+// `render --actions FILE` draws what the run showed, bit for bit (the canvas's size and the
+// frame count follow as the run goes, from the frame loop).
+void record_settings(Recorder& rec, const Options& o, const std::string& display, const platform::LoadedFont& font,
+                     const render::PixelFormat& format);
+// The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
+SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
+
+}  // namespace noneuclid::app

@@ -1,0 +1,141 @@
+// Actions files and recordings (app/script.hpp): events and settings parsed, errors with their
+// line; the settings layered under the command line (app/options.hpp).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "app/options.hpp"
+#include "app/script.hpp"
+
+namespace {
+
+using namespace noneuclid;
+using app::Script;
+using app::ScriptError;
+using app::ScriptEvent;
+using world::Control;
+
+TEST(Script, EventsParseSortedWithTheirKinds) {
+    Script s;
+    ScriptError err;
+    ASSERT_TRUE(app::parse_script("# comment\n1.5 release thrust\n0 press thrust  # go\n\n2 tap preset\n"
+                                  "2 tap projection\n0.75 press spherical\n3.5 attract on\n4 attract off\n",
+                                  "a.txt", s, err))
+        << err.to_string();
+    ASSERT_EQ(s.events.size(), 7u);
+    EXPECT_EQ(s.events[0].time, 0.0);  // sorted by time
+    EXPECT_EQ(s.events[0].kind, ScriptEvent::press);
+    EXPECT_EQ(s.events[1].control, Control::spherical);
+    EXPECT_EQ(s.events[2].kind, ScriptEvent::release);
+    EXPECT_EQ(s.events[3].control, Control::preset);  // ties keep the file's order
+    EXPECT_EQ(s.events[4].control, Control::projection);
+    EXPECT_EQ(s.events[5].kind, ScriptEvent::attract_on);
+    EXPECT_EQ(s.events[6].kind, ScriptEvent::attract_off);
+    EXPECT_TRUE(s.settings.empty());
+}
+
+TEST(Script, SettingsKeepTheirLineAndValue) {
+    Script s;
+    ScriptError err;
+    ASSERT_TRUE(app::parse_script("scene /tmp/my scene.toml\nhud off\n0 press thrust\nsize 320x200\n", "r.txt", s, err));
+    ASSERT_EQ(s.settings.size(), 3u);
+    EXPECT_EQ(s.settings[0].key, "scene");
+    EXPECT_EQ(s.settings[0].value, "/tmp/my scene.toml");
+    EXPECT_EQ(s.settings[1].line, 2);
+    EXPECT_EQ(s.settings[2].value, "320x200");
+    EXPECT_EQ(s.events.size(), 1u);
+}
+
+TEST(Script, ErrorsNameTheLineAndWhatWasExpected) {
+    struct Case {
+        const char* text;
+        long line;
+        const char* says;
+    };
+    const Case cases[] = {
+        {"0 press thrust\nsoon press thrust\n", 2, "expected a time in seconds (a number >= 0) or a setting"},
+        {"1 push thrust\n", 1, "expected press, release, tap or attract after the time, found 'push'"},
+        {"1 press warp\n", 1, "found 'warp'"},
+        {"1 press quit\n", 1, "found 'quit'"},  // quitting is not replayed
+        {"1 press thrust now\n", 1, "unexpected 'now'"},
+        {"1 attract maybe\n", 1, "expected on or off after 'attract'"},
+        {"-1 press thrust\n", 1, "a number >= 0"},
+        {"hud\n", 1, "the setting 'hud' needs a value"},
+    };
+    for (const Case& c : cases) {
+        Script s;
+        ScriptError err;
+        EXPECT_FALSE(app::parse_script(c.text, "a.txt", s, err)) << c.text;
+        EXPECT_EQ(err.line, c.line) << c.text;
+        EXPECT_NE(err.to_string().find(c.says), std::string::npos) << err.to_string();
+        EXPECT_EQ(err.to_string().rfind("a.txt:" + std::to_string(c.line) + ": ", 0), 0u) << err.to_string();
+    }
+    Script s;
+    ScriptError err;
+    EXPECT_FALSE(app::load_script("/nonexistent/actions.txt", s, err));
+    EXPECT_NE(err.to_string().find("cannot read"), std::string::npos);
+}
+
+TEST(Script, ThePlayerGivesEventsWhenDue) {
+    Script s;
+    ScriptError err;
+    ASSERT_TRUE(app::parse_script("0.1 press thrust\n0.100000000 release thrust\n0.2 press left\n", "p", s, err));
+    app::ScriptPlayer p(s.events);
+    EXPECT_EQ(p.next_due(0.05), nullptr);
+    EXPECT_NE(p.next_due(0.1 - 5e-10), nullptr);  // within the 1e-9 s the times are printed to
+    EXPECT_NE(p.next_due(0.1), nullptr);
+    EXPECT_EQ(p.next_due(0.19), nullptr);
+    EXPECT_EQ(p.next_due(0.2)->control, Control::left);
+    EXPECT_EQ(p.next_due(100), nullptr);
+}
+
+// A recording's settings lie under the command line: the defaults, then the file, then argv.
+TEST(Options, SettingsAreDefaultsUnderTheCommandLine) {
+    const std::string path = ::testing::TempDir() + "settings.txt";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("scene fig14\nengine double\nprojection lambert\nhud on\naa on\nsize 320x200\nframes 42\n"
+                   "legend keys\n0 press thrust\n", f);
+        std::fclose(f);
+    }
+    std::string a0 = "noneuclid", a1 = "--actions", a2 = path, a3 = "--engine", a4 = "float", a5 = "--no-hud";
+    char* argv[] = {a0.data(), a1.data(), a2.data(), a3.data(), a4.data(), a5.data()};
+    Script script;
+    const app::Options o = app::layered_options(6, argv, 1, app::Command::render, script);
+    EXPECT_EQ(o.scene, "fig14");
+    EXPECT_EQ(o.engine, app::Engine::float_);  // the command line wins
+    EXPECT_EQ(o.projection, geo::Projection::lambert_equal_area);
+    EXPECT_FALSE(o.hud);  // --no-hud wins over "hud on"
+    EXPECT_TRUE(o.aa);
+    EXPECT_EQ(o.width, 320);
+    EXPECT_EQ(o.height, 200);
+    EXPECT_EQ(o.frames, 42);
+    EXPECT_EQ(o.legend, "keys");
+    EXPECT_EQ(script.events.size(), 1u);
+    // dump has no HUD: the setting does not matter to it, and is no error.
+    Script s2;
+    const app::Options d = app::layered_options(3, argv, 1, app::Command::dump, s2);
+    EXPECT_EQ(d.engine, app::Engine::double_);
+}
+
+TEST(Options, ABadSettingNamesTheFileAndLine) {
+    const std::string path = ::testing::TempDir() + "bad_settings.txt";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("scene kiosk\n\nengine quantum\n", f);
+        std::fclose(f);
+    }
+    std::string a0 = "noneuclid", a1 = "--actions", a2 = path;
+    char* argv[] = {a0.data(), a1.data(), a2.data()};
+    Script script;
+    try {
+        app::layered_options(3, argv, 1, app::Command::render, script);
+        ADD_FAILURE() << "no error";
+    } catch (const app::UsageError& e) {
+        EXPECT_EQ(e.message, path + ":3: --engine must be fixed, double, float or paper, not 'quantum'.");
+    }
+}
+
+}  // namespace

@@ -1,0 +1,301 @@
+// The session behind every display (app/session.hpp) and the frame loop (app/frame_loop.hpp):
+// the attract-mode autopilot, and a run's recording, which `noneuclid render --actions` must
+// replay pixel for pixel (the system test relies on it to compare a real framebuffer with a
+// render). The run here is the real frame loop on a display that delivers scripted keys.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/frame_loop.hpp"
+#include "app/picture.hpp"
+#include "app/setup.hpp"
+
+namespace {
+
+using namespace noneuclid;
+using world::Control;
+
+world::Scene kiosk_scene() {
+    world::Scene s;
+    EXPECT_TRUE(world::builtin_scene("kiosk", world::SceneParams{}, s));
+    return s;
+}
+
+// ---- attract mode --------------------------------------------------------------------------
+
+// Drives a world with only the autopilot, returns (time, K) samples.
+template <class W>
+std::vector<std::pair<double, double>> fly(W& w, app::Autopilot& ap, double seconds, double* top_speed) {
+    std::vector<std::pair<double, double>> k;
+    world::InputEvent ev[8];
+    for (long f = 0; f < static_cast<long>(seconds * 60); ++f) {
+        double speed = 0;
+        for (const auto& b : w.bodies)
+            if (b.desc->controlled) speed = static_cast<double>(b.speed);
+        *top_speed = std::fmax(*top_speed, speed);
+        const int n = ap.frame(w.time, static_cast<double>(w.K), speed, ev);
+        for (int i = 0; i < n; ++i) {
+            world::Action a{};
+            EXPECT_TRUE(world::control_action(ev[i].control, a)) << "the autopilot only uses world actions";
+            if (ev[i].pressed) w.press(a);
+            else w.release(a);
+        }
+        w.step(typename W::scalar(1.0 / 60));
+        k.push_back({w.time, static_cast<double>(w.K)});
+    }
+    return k;
+}
+
+TEST(Attract, StartsAfterTheIdleTimeAndSweepsKAtTheAskedPace) {
+    const world::Scene scene = kiosk_scene();
+    world::World<double> w(scene);
+    app::AttractOptions o;
+    o.idle_seconds = 10, o.sweep_seconds = 20, o.cruise_speed = 0.25;
+    app::Autopilot ap(o, scene.curvature_rate);
+    double top = 0;
+    const auto k = fly(w, ap, 130, &top);
+    // Nothing happens for 10 s.
+    for (const auto& [t, K] : k)
+        if (t < 10 - 1e-9) {
+            EXPECT_DOUBLE_EQ(K, scene.curvature) << t;
+        }
+    ASSERT_TRUE(ap.active());
+    // K reaches both ends, and a full -1 -> +1 run takes sweep_seconds (the duty cycle).
+    double first_low = -1, next_high = -1;
+    for (const auto& [t, K] : k) {
+        if (first_low < 0 && K <= -1 + 1e-9) first_low = t;
+        if (first_low >= 0 && next_high < 0 && K >= 1 - 1e-9) next_high = t;
+    }
+    ASSERT_GT(first_low, 0) << "K never reached -1";
+    ASSERT_GT(next_high, 0) << "K never came back to +1";
+    EXPECT_NEAR(next_high - first_low, 20.0, 0.5);
+    for (const auto& [t, K] : k) EXPECT_TRUE(K >= -1 && K <= 1);
+    // The ship flies but does not run away: thrust only below the cruise speed.
+    EXPECT_GT(top, 0.2);
+    EXPECT_LT(top, 0.25 + scene.thrust / 60 + 1e-9);
+}
+
+TEST(Attract, APressEndsItReleasesWhatItHeldAndResets) {
+    const world::Scene scene = kiosk_scene();
+    world::World<double> w(scene);
+    app::Autopilot ap({5, 20, 0.25}, scene.curvature_rate);
+    double top = 0;
+    fly(w, ap, 8, &top);
+    ASSERT_TRUE(ap.active());
+    world::InputEvent out[8];
+    const int n = ap.interrupt(w.time, out);
+    EXPECT_FALSE(ap.active());
+    ASSERT_GE(n, 2);
+    EXPECT_EQ(out[n - 2].control, Control::reset);
+    EXPECT_TRUE(out[n - 2].pressed);
+    EXPECT_FALSE(out[n - 1].pressed);
+    for (int i = 0; i < n - 2; ++i) EXPECT_FALSE(out[i].pressed) << "only releases before the reset";
+    // Idle again: it comes back after the idle time, not before.
+    world::InputEvent ev[8];
+    EXPECT_EQ(ap.frame(w.time + 4.9, 0, 0, ev), 0);
+    EXPECT_FALSE(ap.active());
+    EXPECT_GT(ap.frame(w.time + 5.0, 0, 0, ev), 0);
+    EXPECT_TRUE(ap.active());
+    // Off means off.
+    app::Autopilot off({0, 20, 0.25}, 0.5);
+    EXPECT_EQ(off.frame(1e6, 0, 0, ev), 0);
+    EXPECT_FALSE(off.active());
+}
+
+// ---- a run through the frame loop, and its replay ----------------------------------------
+
+struct Key {
+    long frame;  // delivered while waiting for this frame
+    Control control;
+    bool pressed;
+};
+
+// A display that nobody watches, whose "keys" come at given frames, and whose canvas is resized
+// at `resize_at` (a window the user drags), as a real one's would be.
+class ScriptedDisplay final : public app::Display {
+public:
+    ScriptedDisplay(int w, int h, render::PixelFormat f, std::vector<Key> keys, long resize_at = -1)
+        : format_(f), keys_(std::move(keys)), resize_at_(resize_at) {
+        allocate(w, h);
+    }
+    render::Canvas canvas() override { return canvas_; }
+    void present() override {
+        if (++presented_ == resize_at_) allocate(canvas_.width() + 40, canvas_.height() - 30);
+    }
+    bool wait(int64_t, app::InputSink& sink) override {
+        for (const Key& k : keys_)
+            if (k.frame == presented_) sink.input({k.control, k.pressed});
+        return true;
+    }
+    bool closing() const override { return false; }
+    bool realtime() const override { return false; }
+    bool read_back(app::Picture& out, std::string&) override {
+        out.pixels = pixels_;
+        out.canvas = render::Canvas(out.pixels.data(), canvas_.width(), canvas_.height(), canvas_.stride(), format_);
+        return true;
+    }
+    const char* legend() const override { return "keys"; }
+
+private:
+    void allocate(int w, int h) {
+        pixels_.assign(static_cast<std::size_t>(w * h * format_.bytes_per_pixel()), 0);
+        canvas_ = render::Canvas(pixels_.data(), w, h, w * format_.bytes_per_pixel(), format_);
+    }
+    render::PixelFormat format_;
+    std::vector<Key> keys_;
+    long resize_at_, presented_ = 0;
+    std::vector<uint8_t> pixels_;
+    render::Canvas canvas_;
+};
+
+struct LiveRun {
+    std::string recording;
+    app::Picture last;  // what the display showed at the end
+};
+
+// `noneuclid run` on the scripted display for `frames` frames, recording as --record does.
+LiveRun run_live(app::Options o, const std::vector<Key>& keys, render::PixelFormat format, long resize_at = -1) {
+    const world::Scene scene = app::load_scene(o);
+    const std::string path = ::testing::TempDir() + "session_recording.txt";
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    EXPECT_NE(f, nullptr);
+    app::Recorder rec(f);
+    platform::LoadedFont font;
+    std::string error;
+    EXPECT_TRUE(platform::hud_font("builtin", font, error));
+    ScriptedDisplay display(320, 200, format, keys, resize_at);
+    o.legend = display.legend();
+    app::record_settings(rec, o, "scripted", font, format);
+    const auto session = app::make_session(o.engine, scene, app::session_options(o, scene, o.legend), font.font, &rec);
+    app::LoopOptions lo;
+    lo.frames = o.frames;
+    app::FrameLoop loop(display, *session, nullptr, &rec, lo);
+    EXPECT_EQ(loop.run(), 0);
+    EXPECT_EQ(loop.frames(), o.frames);
+    std::fclose(f);
+    LiveRun r;
+    std::string err;
+    EXPECT_TRUE(display.read_back(r.last, err));
+    std::FILE* in = std::fopen(path.c_str(), "r");
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, in)) > 0;) r.recording.append(buf, n);
+    std::fclose(in);
+    return r;
+}
+
+// `noneuclid render --actions RECORDING` (without writing the PNG): the recording's settings
+// under nothing else.
+app::Picture replay(const std::string& recording, const std::string& drop = "") {
+    std::string text = recording;
+    if (!drop.empty()) text.erase(text.find(drop), drop.size());
+    const std::string path = ::testing::TempDir() + "session_replay.txt";
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    std::string a0 = "noneuclid", a1 = "--actions", a2 = path;
+    char* argv[] = {a0.data(), a1.data(), a2.data()};
+    app::Script script;
+    const app::Options o = app::layered_options(3, argv, 1, app::Command::render, script);
+    platform::LoadedFont font;
+    std::string error;
+    EXPECT_TRUE(platform::hud_font(o.font, font, error)) << error;
+    app::Picture p;
+    app::render_picture(o, app::load_scene(o), &script, font.font, p);
+    return p;
+}
+
+long differing_bytes(const app::Picture& a, const app::Picture& b) {
+    if (a.canvas.width() != b.canvas.width() || a.canvas.height() != b.canvas.height()) return -1;
+    long n = 0;
+    for (int y = 0; y < a.canvas.height(); ++y)
+        for (int x = 0; x < a.canvas.width(); ++x) n += a.canvas.get_word(x, y) != b.canvas.get_word(x, y);
+    return n;
+}
+
+// Keys of every kind: held world actions, a preset, K set by 1/2/3, the projection and the HUD.
+const std::vector<Key> kKeys = {
+    {12, Control::thrust, true},      {40, Control::curvature_down, true}, {95, Control::curvature_down, false},
+    {130, Control::thrust, false},    {131, Control::left, true},          {150, Control::left, false},
+    {160, Control::projection, true}, {161, Control::projection, false},   {170, Control::preset, true},
+    {171, Control::preset, false},    {200, Control::hud, true},           {201, Control::hud, false},
+    {230, Control::spherical, true},  {231, Control::spherical, false},    {260, Control::hud, true},
+    {262, Control::hud, false},       {300, Control::hyperbolic, true},    {300, Control::hyperbolic, false},
+};
+
+void replays_exactly(app::Engine engine, double idle, int threads = 1) {
+    for (render::PixelFormat format : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888()}) {
+        SCOPED_TRACE(format.name);
+        // With attract mode: idle from 5 s on, the autopilot flies from 8 s to the end (its
+        // legend on the HUD), or (rgb565) until a key at 9.3 s ends it: its held controls are
+        // released, the world reset.
+        std::vector<Key> keys = kKeys;
+        const bool interrupt = idle > 0 && format.bits_per_pixel == 16;
+        if (interrupt) keys.push_back({560, Control::left, true}), keys.push_back({575, Control::left, false});
+        app::Options o = app::defaults(app::Command::run);
+        o.engine = engine, o.frames = idle > 0 ? 600 : 420, o.attract = idle, o.threads = threads, o.format = format;
+        o.hud = true;
+        const LiveRun live = run_live(o, keys, format);
+        EXPECT_EQ(differing_bytes(replay(live.recording), live.last), 0) << live.recording;
+        // What the recording holds: the keys as they took effect, the view's as taps, the end.
+        for (const char* line : {"press thrust", "release curvature_down", "tap projection", "tap hud",
+                                 "press spherical", "press hyperbolic", "\nsize 320x200\n"})
+            EXPECT_NE(live.recording.find(line), std::string::npos) << line;
+        EXPECT_NE(live.recording.find("\nframes " + std::to_string(o.frames) + "\n"), std::string::npos);
+        if (idle > 0) {
+            EXPECT_NE(live.recording.find("attract on"), std::string::npos) << live.recording;
+            EXPECT_EQ(live.recording.find("attract off") != std::string::npos, interrupt) << live.recording;
+        }
+        // The comparison can fail: without one key the picture differs.
+        const std::size_t at = live.recording.find("tap projection");
+        const std::size_t start = live.recording.rfind('\n', at) + 1;
+        const std::string line = live.recording.substr(start, live.recording.find('\n', at) + 1 - start);
+        EXPECT_GT(differing_bytes(replay(live.recording, line), live.last), 100);
+    }
+}
+
+TEST(Recording, ReplaysPixelExactFixed) { replays_exactly(app::Engine::fixed, 0); }
+TEST(Recording, ReplaysPixelExactDouble) { replays_exactly(app::Engine::double_, 0); }
+TEST(Recording, ReplaysPixelExactFloat) { replays_exactly(app::Engine::float_, 0); }
+// With attract mode kicking in (after 3 s idle) the autopilot's presses and the HUD's attract
+// legend are replayed too.
+TEST(Recording, WithAttractModeReplaysPixelExact) { replays_exactly(app::Engine::fixed, 3); }
+// --threads: drawn over a pool of 2 or 3, the same pixels as render's one thread.
+TEST(Recording, DrawnOnThreadsReplaysPixelExact) {
+    replays_exactly(app::Engine::fixed, 3, 2);
+    replays_exactly(app::Engine::double_, 0, 3);
+}
+
+// A window resized during the run: the recording's last size is the last frame's.
+TEST(Recording, AResizedWindowReplaysAtItsLastSize) {
+    app::Options o = app::defaults(app::Command::run);
+    o.frames = 200;
+    const LiveRun live = run_live(o, kKeys, render::PixelFormat::xrgb8888(), 120);
+    EXPECT_EQ(live.last.canvas.width(), 360);
+    EXPECT_NE(live.recording.find("\nsize 360x170\n"), std::string::npos) << live.recording;
+    EXPECT_EQ(differing_bytes(replay(live.recording), live.last), 0);
+}
+
+// The keys 1, 2, 3 set K, through the session, as actions.
+TEST(Session, KeysSetKAndQuitStops) {
+    app::Options o = app::defaults(app::Command::run);
+    const world::Scene scene = app::load_scene(o);
+    const auto s = app::make_session(o.engine, scene, app::session_options(o, scene, "keys"), render::builtin_font(),
+                                     nullptr);
+    ASSERT_NE(s->curvature(), 1.0);
+    for (auto [c, K] : {std::pair{Control::spherical, 1.0}, {Control::hyperbolic, -1.0}, {Control::flat, 0.0}}) {
+        const double before = s->curvature();
+        s->queue({c, true});
+        s->queue({c, false});
+        EXPECT_EQ(s->curvature(), before) << "queued input waits for the step";
+        s->step();
+        EXPECT_EQ(s->curvature(), K) << world::control_name(c);
+    }
+    EXPECT_FALSE(s->quit());
+    s->queue({Control::quit, true});
+    EXPECT_TRUE(s->quit());
+}
+
+}  // namespace
