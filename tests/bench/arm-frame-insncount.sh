@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Instructions per kiosk frame on ARM, counted under qemu-user by ../shared/tools/arm-insncount
-# (repeatable, unlike times): the whole frame and each stage, fixed, double and float engines.
+# Instructions per kiosk frame on ARM, counted under qemu-user by
+# tests/bench/insncount/arm-insncount (repeatable, unlike times): the whole frame and each stage, fixed, double and float engines.
 #
 #   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
 #   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Instructions per call on ARM for each fixed-point function against std:: double and float,
-# counted under qemu-user by ../shared/tools/arm-insncount (repeatable, unlike times).
+# counted under qemu-user by tests/bench/insncount/arm-insncount (repeatable, unlike times).
 #
-#   tests/bench/arm-insncount.sh            # aarch64 (Cortex-A53 tuning), the README's table
+#   tests/bench/arm-insncount.sh            # aarch64 (Cortex-A53 tuning), docs/performance.md's table
 #   tests/bench/arm-insncount.sh armhf      # 32-bit ARMv7 build
 #
-# Needs crossbuild-essential-arm64 / -armhf and qemu-user (installed here if missing).
+# Needs crossbuild-essential-arm64 / -armhf, qemu-user and a C compiler for the counter's
+# plugin (installed here through platform/debian/deps.sh if missing). ARM_INSNCOUNT=PATH
+# uses another counter with the same interface.
 # Per call = (count with N calls - count with 0 calls) / N, minus the loop's own cost
 # (insn_probe nop: load an input, accumulate, count), which is printed too.
 set -euo pipefail
@@ -16,9 +18,9 @@ case $target in
     armhf) arch=arm; pkg=crossbuild-essential-armhf ;;
     *) echo "arm-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
 esac
-counter=${ARM_INSNCOUNT:-../shared/tools/arm-insncount/arm-insncount}
+counter=${ARM_INSNCOUNT:-tests/bench/insncount/arm-insncount}
 if [ ! -x "$counter" ]; then
-    echo "arm-insncount.sh: $counter not found: check out ../shared beside this repository or set ARM_INSNCOUNT." >&2
+    echo "arm-insncount.sh: the counter $counter is missing or not executable (ARM_INSNCOUNT names another)." >&2
     exit 2
 fi
 . platform/debian/deps.sh

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Instructions per tessellated point and per vertex on ARM, for the fixed and double engines at
-# the curvatures given, counted under qemu-user by ../shared/tools/arm-insncount (repeatable,
-# unlike times):
+# the curvatures given, counted under qemu-user by tests/bench/insncount/arm-insncount
+# (repeatable, unlike times):
 #   per point   the geometry stage of the stress scene (200 bodies x 8 edges) drawn at
 #               tessellation level 16 against level 8: 12,800 more points a frame;
 #   per vertex  the same at level 1 (an edge is its end vertex alone), 16 vertices a body

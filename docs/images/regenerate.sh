@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# Redraw the pictures in docs/images/ with the current program (the README shows them).
+#   docs/images/regenerate.sh        # builds the release preset if needed; needs python3
+#
+# kiosk.png      the kiosk scene after 120 frames (2 s), anti-aliased, with the HUD, 800x480
+# curvature.png  the same scene and frame at K = -1, 0 and +1, side by side (three 400x400
+#                renders joined by the few lines of Python below: no imaging library needed)
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+nc=build/release/noneuclid
+if [ ! -x "$nc" ]; then
+    cmake --preset release >/dev/null && cmake --build --preset release --target noneuclid -j 2 >/dev/null
+fi
+"$nc" render --scene kiosk --frames 120 --aa --hud --size 800x480 --out docs/images/kiosk.png
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for k in -1 0 1; do
+    "$nc" render --scene kiosk --frames 120 --aa --hud --size 400x400 --curvature "$k" --out "$tmp/k$k.png"
+done
+python3 - "$tmp/k-1.png" "$tmp/k0.png" "$tmp/k1.png" docs/images/curvature.png <<'PY'
+# Join 8-bit RGB PNGs of the same height left to right, with a 4-px gap.
+import struct, sys, zlib
+
+def read(path):
+    data = open(path, 'rb').read()
+    pos, idat = 8, b''
+    while pos < len(data):
+        n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        pos += 12 + n
+        if kind == b'IHDR':
+            w, h, depth, colour, _, _, interlace = struct.unpack('>IIBBBBB', body)
+            assert (depth, colour, interlace) == (8, 2, 0), path + ': not 8-bit RGB'
+        elif kind == b'IDAT':
+            idat += body
+    raw, stride, rows, prev = zlib.decompress(idat), 3 * w, [], bytearray(3 * w)
+    for y in range(h):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b, c = prev[i], prev[i - 3] if i >= 3 else 0
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, rows
+
+images = [read(p) for p in sys.argv[1:-1]]
+h, gap = images[0][1], bytes(3 * 4)
+assert all(img[1] == h for img in images)
+width = sum(img[0] for img in images) + 4 * (len(images) - 1)
+raw = b''.join(b'\0' + gap.join(img[2][y] for img in images) for y in range(h))
+def chunk(kind, body):
+    return struct.pack('>I', len(body)) + kind + body + struct.pack('>I', zlib.crc32(kind + body))
+with open(sys.argv[-1], 'wb') as out:
+    out.write(b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', width, h, 8, 2, 0, 0, 0))
+              + chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
+print('regenerate.sh: wrote', sys.argv[-1], f'({width}x{h})')
+PY
