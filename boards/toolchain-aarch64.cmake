@@ -3,7 +3,7 @@
 #
 # Debian packages: crossbuild-essential-arm64 (compiler + sysroot in /usr/aarch64-linux-gnu)
 # and qemu-user (runs the tests; the non-static qemu can load plugins, which
-# ../shared/tools/arm-insncount needs). Use via the `aarch64` preset.
+# tests/bench/insncount/arm-insncount needs). Use via the `aarch64` preset.
 
 set(CMAKE_SYSTEM_NAME Linux)
 set(CMAKE_SYSTEM_PROCESSOR aarch64)

@@ -1,5 +1,5 @@
 // Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
-// (../shared/tools/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
+// (tests/bench/insncount/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
 //     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION [VERTICES]]]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
