@@ -49,98 +49,13 @@ public:
             }
     }
 
+    // The keys checked and mapped, then the device named or every device with one of them.
     bool open(const EvdevConfig& config, std::string& error) {
-        if (config.keys.empty()) {
-            error = "no evdev keys are configured: give the [[button]] tables in the board file key codes";
-            return false;
-        }
-        control_.assign(KEY_MAX + 1, -1);
-        for (const auto& k : config.keys) {
-            if (k.code == 0 || k.code > KEY_MAX) {
-                error = "key code " + std::to_string(k.code) + " (" + world::control_name(k.control) +
-                        ") is not an evdev key: use a code from 1 to " + std::to_string(KEY_MAX) +
-                        " from /usr/include/linux/input-event-codes.h";
-                return false;
-            }
-            if (control_[k.code] >= 0 && control_[k.code] != static_cast<int>(k.control)) {
-                error = "key code " + std::to_string(k.code) + " is given to both " +
-                        world::control_name(static_cast<world::Control>(control_[k.code])) + " and " +
-                        world::control_name(k.control) + ": give each [[button]] in the board file its own key";
-                return false;
-            }
-            control_[k.code] = static_cast<int>(k.control);
-            if (std::find(codes_.begin(), codes_.end(), k.code) == codes_.end()) codes_.push_back(k.code);
-        }
-        if (codes_.size() > kMaxCodes) {
-            error = std::to_string(codes_.size()) + " evdev key codes are configured, more than the " +
-                    std::to_string(kMaxCodes) + " supported: remove some key entries from the board file";
-            return false;
-        }
-        std::sort(codes_.begin(), codes_.end());
+        if (!map_keys(config, error)) return false;
+        grab_ = config.grab;
         std::string codes;
         for (size_t i = 0; i < codes_.size(); ++i) codes += (i ? ", " : "") + std::to_string(codes_[i]);
-        grab_ = config.grab;
-
-        if (!config.device.empty()) {
-            std::string name;
-            int fd = ::open(config.device.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-            if (fd < 0) {
-                int err = errno;
-                if (err == EACCES || err == EPERM)
-                    error = group_hint(config.device);
-                else if (err == ENOENT)
-                    error = config.device + " does not exist: set device in the board file's [evdev] table to "
-                            "one of /dev/input/by-id/* (or leave it empty to use every device with the keys)";
-                else
-                    error = "cannot open " + config.device + ": " + std::strerror(err);
-                return false;
-            }
-            if (!has_keys(fd, name)) {
-                close(fd);
-                error = config.device + (name.empty() ? "" : " (" + name + ")") + " has none of the key codes " + codes +
-                        ": set key in the board file's [[button]] tables to codes it has (`evtest " + config.device +
-                        "` lists them), or pick another device";
-                return false;
-            }
-            if (!add(fd, config.device, name, error)) return false;
-        } else {
-            std::vector<std::pair<long, std::string>> paths;
-            if (DIR* d = opendir("/dev/input")) {
-                while (const dirent* e = readdir(d)) {
-                    long n = event_number(e->d_name);
-                    if (n >= 0) paths.emplace_back(n, std::string("/dev/input/") + e->d_name);
-                }
-                closedir(d);
-            }
-            std::sort(paths.begin(), paths.end());
-            std::string denied, seen;
-            for (const auto& p : paths) {
-                int fd = ::open(p.second.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-                if (fd < 0) {
-                    if ((errno == EACCES || errno == EPERM) && denied.empty()) denied = p.second;
-                    continue;
-                }
-                std::string name;
-                if (!has_keys(fd, name)) {
-                    seen += (seen.empty() ? "" : ", ") + p.second + " \"" + name + "\"";
-                    close(fd);
-                    continue;
-                }
-                if (!add(fd, p.second, name, error)) return false;
-            }
-            if (devices_.empty()) {
-                if (!denied.empty())
-                    error = group_hint(denied + " (looking for a device with the key codes " + codes + ")");
-                else
-                    error = "no input device has any of the key codes " + codes + " (" +
-                            (paths.empty() ? std::string("this system has no /dev/input/event* devices")
-                                           : "looked at " + seen) +
-                            "): connect the keyboard or arcade encoder, add the dtoverlay=gpio-key lines to "
-                            "/boot/firmware/config.txt, or set key codes the device has in the board file";
-                return false;
-            }
-        }
-
+        if (!(config.device.empty() ? open_every(codes, error) : open_named(config.device, codes, error))) return false;
         describe_ = "evdev: ";
         for (size_t i = 0; i < devices_.size(); ++i)
             describe_ += (i ? ", " : "") + devices_[i].path + " \"" + devices_[i].name + "\"";
@@ -189,6 +104,100 @@ public:
     }
 
 private:
+    // Every configured key code checked and mapped to its control (codes_ sorted).
+    bool map_keys(const EvdevConfig& config, std::string& error) {
+        if (config.keys.empty()) {
+            error = "no evdev keys are configured: give the [[button]] tables in the board file key codes";
+            return false;
+        }
+        control_.assign(KEY_MAX + 1, -1);
+        for (const auto& k : config.keys) {
+            if (k.code == 0 || k.code > KEY_MAX) {
+                error = "key code " + std::to_string(k.code) + " (" + world::control_name(k.control) +
+                        ") is not an evdev key: use a code from 1 to " + std::to_string(KEY_MAX) +
+                        " from /usr/include/linux/input-event-codes.h";
+                return false;
+            }
+            if (control_[k.code] >= 0 && control_[k.code] != static_cast<int>(k.control)) {
+                error = "key code " + std::to_string(k.code) + " is given to both " +
+                        world::control_name(static_cast<world::Control>(control_[k.code])) + " and " +
+                        world::control_name(k.control) + ": give each [[button]] in the board file its own key";
+                return false;
+            }
+            control_[k.code] = static_cast<int>(k.control);
+            if (std::find(codes_.begin(), codes_.end(), k.code) == codes_.end()) codes_.push_back(k.code);
+        }
+        if (codes_.size() > kMaxCodes) {
+            error = std::to_string(codes_.size()) + " evdev key codes are configured, more than the " +
+                    std::to_string(kMaxCodes) + " supported: remove some key entries from the board file";
+            return false;
+        }
+        std::sort(codes_.begin(), codes_.end());
+        return true;
+    }
+    // The device the board file names; it must have one of the key codes.
+    bool open_named(const std::string& device, const std::string& codes, std::string& error) {
+        std::string name;
+        int fd = ::open(device.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) {
+            int err = errno;
+            if (err == EACCES || err == EPERM)
+                error = group_hint(device);
+            else if (err == ENOENT)
+                error = device + " does not exist: set device in the board file's [evdev] table to "
+                        "one of /dev/input/by-id/* (or leave it empty to use every device with the keys)";
+            else
+                error = "cannot open " + device + ": " + std::strerror(err);
+            return false;
+        }
+        if (!has_keys(fd, name)) {
+            close(fd);
+            error = device + (name.empty() ? "" : " (" + name + ")") + " has none of the key codes " + codes +
+                    ": set key in the board file's [[button]] tables to codes it has (`evtest " + device +
+                    "` lists them), or pick another device";
+            return false;
+        }
+        return add(fd, device, name, error);
+    }
+    // Every /dev/input/event* that has one of the key codes, in number order.
+    bool open_every(const std::string& codes, std::string& error) {
+        std::vector<std::pair<long, std::string>> paths;
+        if (DIR* d = opendir("/dev/input")) {
+            while (const dirent* e = readdir(d)) {
+                long n = event_number(e->d_name);
+                if (n >= 0) paths.emplace_back(n, std::string("/dev/input/") + e->d_name);
+            }
+            closedir(d);
+        }
+        std::sort(paths.begin(), paths.end());
+        std::string denied, seen;
+        for (const auto& p : paths) {
+            int fd = ::open(p.second.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+            if (fd < 0) {
+                if ((errno == EACCES || errno == EPERM) && denied.empty()) denied = p.second;
+                continue;
+            }
+            std::string name;
+            if (!has_keys(fd, name)) {
+                seen += (seen.empty() ? "" : ", ") + p.second + " \"" + name + "\"";
+                close(fd);
+                continue;
+            }
+            if (!add(fd, p.second, name, error)) return false;
+        }
+        if (devices_.empty()) {
+            if (!denied.empty())
+                error = group_hint(denied + " (looking for a device with the key codes " + codes + ")");
+            else
+                error = "no input device has any of the key codes " + codes + " (" +
+                        (paths.empty() ? std::string("this system has no /dev/input/event* devices")
+                                       : "looked at " + seen) +
+                        "): connect the keyboard or arcade encoder, add the dtoverlay=gpio-key lines to "
+                        "/boot/firmware/config.txt, or set key codes the device has in the board file";
+            return false;
+        }
+        return true;
+    }
     struct Device {
         int fd = -1;
         std::string path, name;
