@@ -168,7 +168,9 @@ bool hud_font(const std::string& choice, LoadedFont& out, std::string& error) {
         out.source = "built-in 6x8";
         return true;
     }
-    return load_console_font(choice, out, error);
+    if (load_console_font(choice, out, error)) return true;
+    error += ": give --font a PSF console font (gzip-compressed or not), or builtin.";
+    return false;
 }
 
 }  // namespace noneuclid::platform
