@@ -299,7 +299,7 @@ public:
                 return false;
             }
             const int64_t now = monotonic_ns();
-            if (closed_ || now >= deadline_ns) return true;
+            if (closed_ || now >= deadline_ns || stop_signal()) return true;
             pollfd fd{ConnectionNumber(x_.dpy), POLLIN, 0};
             const int64_t ms = (deadline_ns - now + 999999) / 1000000;
             if (poll(&fd, 1, static_cast<int>(ms > 1000 ? 1000 : ms)) < 0 && errno != EINTR) {

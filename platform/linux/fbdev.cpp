@@ -186,7 +186,6 @@ vt_mode g_vt_mode{};
 termios g_termios{};
 bool g_have_termios = false;
 volatile std::sig_atomic_t g_restored = 1;
-volatile std::sig_atomic_t g_stop_signal = 0;
 
 void restore_console() {
     if (g_restored) return;
@@ -199,11 +198,6 @@ void restore_console() {
     }
 }
 
-void on_stop(int sig) {
-    g_stop_signal = sig;
-    ConsoleGuard::stop_requested = 1;
-}
-
 void on_crash(int sig) {
     restore_console();
     signal(sig, SIG_DFL);
@@ -212,15 +206,8 @@ void on_crash(int sig) {
 
 }  // namespace
 
-volatile std::sig_atomic_t ConsoleGuard::stop_requested = 0;
-int ConsoleGuard::stop_signal() { return g_stop_signal; }
-
 ConsoleGuard::ConsoleGuard() {
-    struct sigaction stop{};
-    stop.sa_handler = on_stop;  // no SA_RESTART: poll() and nanosleep return EINTR at once
-    sigemptyset(&stop.sa_mask);
-    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(s, &stop, nullptr);
-
+    catch_stop_signals();  // the loop then ends, and the destructor restores the console
     long mode = 0;
     if (!isatty(STDIN_FILENO) || ioctl(STDIN_FILENO, KDGETMODE, &mode) != 0) {
         note = "stdin is not a virtual console, so the console is left as it is (fbcon may draw its cursor over the picture; the service runs on tty1)";

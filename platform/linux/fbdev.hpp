@@ -7,8 +7,9 @@
 // on: DRM's fbdev emulation usually offers neither (docs/kiosk.md).
 //
 // The console: if stdin is a virtual terminal, it is put in KD_GRAPHICS (fbcon stops drawing
-// text and the cursor) with echo off, and restored on exit, on SIGINT/TERM/HUP/QUIT and on
-// crash signals (SEGV/BUS/ILL/FPE/ABRT, after which the signal is re-raised). The screen is
+// text and the cursor) with echo off, and restored on exit (SIGINT/TERM/HUP/QUIT ask the loop
+// to stop: platform::catch_stop_signals) and on crash signals (SEGV/BUS/ILL/FPE/ABRT, after
+// which the signal is re-raised). The screen is
 // unblanked at start.
 #pragma once
 
@@ -68,9 +69,6 @@ public:
     ConsoleGuard& operator=(const ConsoleGuard&) = delete;
     bool owned() const;
     std::string note;  // one line for the start-up log
-    // Set by SIGINT/SIGTERM/SIGHUP/SIGQUIT: the frame loop should finish and return.
-    static volatile std::sig_atomic_t stop_requested;
-    static int stop_signal();
 };
 
 }  // namespace noneuclid::platform

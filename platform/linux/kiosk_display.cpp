@@ -51,7 +51,7 @@ public:
                     return false;
                 }
             }
-            if (ConsoleGuard::stop_requested) return true;
+            if (stop_signal()) return true;
             const int64_t after = monotonic_ns();
             for (auto& in : inputs_) {
                 const int got = in->read(events_, static_cast<int>(std::size(events_)), after);
@@ -60,10 +60,7 @@ public:
             if (after >= deadline_ns) return true;
         }
     }
-    bool closing() const override { return ConsoleGuard::stop_requested; }
-    std::string stop_reason() const override {
-        return ConsoleGuard::stop_requested ? "by signal " + std::to_string(ConsoleGuard::stop_signal()) : "";
-    }
+    bool closing() const override { return false; }
     bool paced_by_refresh() const override { return vsync_pace_ && fb_.vsync(); }
     bool read_back(app::Picture& out, std::string&) override {
         out.canvas = fb_.read_back(out.pixels);

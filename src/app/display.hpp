@@ -42,13 +42,11 @@ public:
     virtual void present() = 0;
     // Delivers input to `sink` until the clock (platform::monotonic_ns) reaches deadline_ns,
     // sleeping in between; at least once, without waiting, when the deadline has passed.
-    // Returns early when closing() becomes true. False on a failure it has reported in one
-    // sentence on stderr.
+    // Returns early when closing() becomes true or a stop signal comes. False on a failure it
+    // has reported in one sentence on stderr.
     virtual bool wait(int64_t deadline_ns, InputSink& sink) = 0;
-    // The user closed the window, a signal asked the program to stop, ...
+    // The user closed the window. (A stop signal is the frame loop's: platform::stop_signal.)
     virtual bool closing() const = 0;
-    // Why closing(), e.g. "by signal 15", for the line "stopped by signal 15 after N frames"; or "".
-    virtual std::string stop_reason() const { return {}; }
     // present() waits for the screen's refresh, so the loop need not sleep.
     virtual bool paced_by_refresh() const { return false; }
     // False for a display nobody watches (headless): frames follow each other without waiting.

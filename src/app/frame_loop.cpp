@@ -10,6 +10,7 @@ FrameLoop::FrameLoop(Display& display, Session& session, const Script* script, R
                      const LoopOptions& o)
     : display_(display), session_(session), recorder_(recorder), o_(o) {
     if (script) player_ = ScriptPlayer(script->events);
+    platform::catch_stop_signals();
     period_ = static_cast<int64_t>(1e9 / (o_.fps > 0 ? o_.fps : 60) + 0.5);
     start_ = next_ = fps_since_ = platform::monotonic_ns();
 }
@@ -22,7 +23,7 @@ bool FrameLoop::tick() {
         failed_ = true;
         return false;
     }
-    if (display_.closing() || session_.quit()) return false;
+    if (display_.closing() || session_.quit() || platform::stop_signal()) return false;
     session_.play_due(player_);
     const render::Canvas canvas = display_.canvas();
     if (recorder_ && (canvas.width() != width_ || canvas.height() != height_)) {
@@ -45,8 +46,8 @@ bool FrameLoop::tick() {
 
 int FrameLoop::finish() {
     int status = failed_ ? 1 : 0;
-    const std::string reason = display_.stop_reason();
-    if (!reason.empty()) std::fprintf(stderr, "noneuclid: stopped %s after %ld frames.\n", reason.c_str(), frames_);
+    if (const int sig = platform::stop_signal())
+        std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames.\n", sig, frames_);
     if (recorder_) recorder_->setting("frames", std::to_string(frames_));
     if (!o_.screenshot.empty()) {
         Picture shot;

@@ -25,6 +25,10 @@ struct CpuTime {
     double user = 0, system = 0;
 };
 CpuTime cpu_time();
+// From now on SIGINT, SIGTERM, SIGHUP and SIGQUIT ask the program to stop instead of ending it:
+// stop_signal() then says which came (0: none yet), and waits (poll, sleep) end early.
+void catch_stop_signals();
+int stop_signal();
 
 // ---- which display `run` uses when not told ------------------------------------------------
 

@@ -1,0 +1,24 @@
+// SIGINT, SIGTERM, SIGHUP and SIGQUIT as a request to stop (app/platform.hpp): the frame loop
+// finishes the frame, writes the recording's end and the screenshot, and the displays restore
+// what they changed (the console) on the way out.
+#include <csignal>
+
+#include "app/platform.hpp"
+
+namespace noneuclid::platform {
+
+namespace {
+volatile std::sig_atomic_t g_stop_signal = 0;
+void on_stop(int sig) { g_stop_signal = sig; }
+}  // namespace
+
+void catch_stop_signals() {
+    struct sigaction stop{};
+    stop.sa_handler = on_stop;  // no SA_RESTART: poll() and nanosleep return EINTR at once
+    sigemptyset(&stop.sa_mask);
+    for (int s : {SIGINT, SIGTERM, SIGHUP, SIGQUIT}) sigaction(s, &stop, nullptr);
+}
+
+int stop_signal() { return g_stop_signal; }
+
+}  // namespace noneuclid::platform
