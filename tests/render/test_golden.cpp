@@ -107,8 +107,8 @@ TEST(Golden, TheDoubleEngineRedrawsItsGoldens) {
 TEST(Golden, TheFixedEngineDrawsTheSamePictures) {
     for (const Golden& g : kGoldens) {
         const Diff d = compare(render_rgb<world::World<fx::fixed>>(g), load(g), 24);
-        std::printf("golden %s: fixed engine differs in %ld pixels (%.3f%%), %ld with no match within 1 px\n", g.name,
-                    d.differing, 100.0 * d.differing / (480 * 480), d.unmatched);
+        RecordProperty(std::string(g.name) + "_fixed_differing", static_cast<int>(d.differing));
+        RecordProperty(std::string(g.name) + "_fixed_unmatched", static_cast<int>(d.unmatched));
         EXPECT_LE(d.differing, 480 * 480 / 50) << g.name;  // 2%
         EXPECT_LE(d.unmatched, d.differing / 20 + 5) << g.name;
     }
