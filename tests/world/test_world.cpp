@@ -299,8 +299,10 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
     for (double K : {-1.0, 0.0, 0.7}) {
         World<double> w(s);
         w.K = K;
+        std::size_t checked = 0;  // the line's vertices, checked below
         for (const Body<double>& b : w.bodies) {
             if (b.desc != line && b.desc->name != "grid x=1") continue;
+            checked += b.local.size();
             std::vector<Polar<double>> v(b.local.size());
             w.vertices(b, v.data());
             const Polar<double> foot{1.0, 0.0};
@@ -312,6 +314,8 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
                 }
             }
         }
+        EXPECT_EQ(checked, line->vertices.size()) << "K=" << K << ": the world has the grid line's body, once";
+        EXPECT_GE(checked, 3u) << "K=" << K;
     }
 }
 
