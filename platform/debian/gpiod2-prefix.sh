@@ -70,10 +70,26 @@ apt_private() {
         "$@"
 }
 
+# As in deps.sh: an index that fails to update (a mirror mid-sync) is not fatal by itself; the
+# update is tried twice and the download decides. A failed download gets fresh lists and one
+# more try, then the script stops, naming what it could not fetch.
+update() {
+    apt_private update </dev/null >&2 && return 0
+    echo "gpiod2-prefix.sh: apt-get update reported errors (above); trying it once more in ${NONEUCLID_APT_RETRY_DELAY:-10} s" >&2
+    sleep "${NONEUCLID_APT_RETRY_DELAY:-10}"
+    apt_private update </dev/null >&2 ||
+        echo "gpiod2-prefix.sh: apt-get update reported errors again (above); downloading anyway" >&2
+}
+download() {
+    (cd "$apt_dir/debs-$arch" && rm -f ./*.deb &&
+        apt_private download "libgpiod-dev:$arch/$suite" "libgpiod3:$arch/$suite" </dev/null >&2)
+}
 echo "gpiod2-prefix.sh: fetching libgpiod-dev and libgpiod3 ($arch) from $suite" >&2
-apt_private update >&2
-(cd "$apt_dir/debs-$arch" && rm -f ./*.deb &&
-    apt_private download "libgpiod-dev:$arch/$suite" "libgpiod3:$arch/$suite" >&2)
+update
+download || { echo "gpiod2-prefix.sh: the download failed (above); updating and trying once more" >&2; update; download; } || {
+    echo "gpiod2-prefix.sh: could not download libgpiod-dev and libgpiod3 ($arch) from $mirror $suite (twice; output above)" >&2
+    exit 1
+}
 
 rm -rf "$root"
 mkdir -p "$root"

@@ -62,8 +62,9 @@ std::set<std::pair<int, int>> lit(const Canvas& c) {
 
 // The reference for an aliased line: along the major axis, each pixel whose centre coordinate
 // lies in [start, end), the pixel containing the exact line point there (computed in long
-// double, rounded down), plus the pixel containing the end point.
-std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int h) {
+// double, rounded down), plus the pixel containing the end point. *ties counts the columns whose
+// exact line point lies on a pixel boundary (where rounding down decides).
+std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int h, long* ties = nullptr) {
     std::set<std::pair<int, int>> s;
     const long double x0 = a.x / 256.0L, y0 = a.y / 256.0L, x1 = b.x / 256.0L, y1 = b.y / 256.0L;
     const bool xm = std::fabs(x1 - x0) >= std::fabs(y1 - y0);
@@ -78,6 +79,7 @@ std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int 
             if (!in) continue;
             const long double v = v0 + (c - u0) * (v1 - v0) / (u1 - u0);
             const long long j = static_cast<long long>(std::floor(v));
+            if (ties && v == std::floor(v)) ++*ties;
             xm ? add(i, j) : add(j, i);
         }
     }
@@ -89,19 +91,34 @@ TEST(Raster, AliasedLinesMatchTheReferencePixelForPixel) {
     std::mt19937 rng(1);
     std::uniform_int_distribution<int32_t> cx(0, 64 * 256 - 1), cy(0, 48 * 256 - 1);
     std::vector<uint32_t> buf(64 * 48);
-    int lines = 0;
+    // What the sample covered: the cases the reference tells apart.
+    long shallow = 0, steep = 0, axis = 0, points = 0, ties = 0, pixels = 0;
     for (int k = 0; k < 20000; ++k) {
         const SubPoint a{cx(rng), cy(rng)}, b{k % 10 == 0 ? a.x : cx(rng), k % 10 == 1 ? a.y : cy(rng)};
         std::fill(buf.begin(), buf.end(), 0);
         Canvas c(buf.data(), 64, 48, 64 * 4, PixelFormat::xrgb8888());
         draw_line(c, a, b, {255, 255, 255});
-        const auto want = reference_line(a, b, 64, 48);
+        const auto want = reference_line(a, b, 64, 48, &ties);
         // A column centre exactly on a pixel boundary in v is a tie both sides resolve by
         // rounding down, exactly; long double holds these coordinates exactly.
         ASSERT_EQ(lit(c), want) << "line (" << a.x << "," << a.y << ") -> (" << b.x << "," << b.y << ") / 256";
-        ++lines;
+        const int32_t dx = std::abs(b.x - a.x), dy = std::abs(b.y - a.y);
+        (dx == 0 && dy == 0 ? points : (dx == 0 || dy == 0) ? axis : dx >= dy ? shallow : steep)++;
+        pixels += static_cast<long>(want.size());
     }
-    EXPECT_EQ(lines, 20000);
+    // The sample is only as good as what it covers: lines of both major axes, axis-aligned ones,
+    // ties, and long lines (a random line across the 64x48 canvas averages ~27 pixels).
+    EXPECT_GT(shallow, 5000);
+    EXPECT_GT(steep, 5000);
+    EXPECT_GT(axis, 3000);  // every tenth line vertical, every tenth horizontal
+    EXPECT_GT(ties, 100);
+    EXPECT_GT(pixels, 20000 * 15);
+    RecordProperty("shallow", static_cast<int>(shallow));
+    RecordProperty("steep", static_cast<int>(steep));
+    RecordProperty("axis_aligned", static_cast<int>(axis));
+    RecordProperty("single_points", static_cast<int>(points));
+    RecordProperty("ties", static_cast<int>(ties));
+    RecordProperty("pixels", static_cast<int>(pixels));
 }
 
 TEST(Raster, AntiAliasedCoverageSumsToLengthTimesWidth) {
@@ -233,6 +250,7 @@ TEST(Raster, PolylinesPlotSharedPointsOnce) {
     // geometry, not the shared point.)
     std::mt19937 rng(4);
     std::uniform_real_distribution<double> py(0, 60), step(3, 12);
+    long shared_points_visited = 0;
     for (int k = 0; k < 500; ++k) {
         SubPoint pts[6];
         double x = step(rng) - 2;
@@ -243,8 +261,12 @@ TEST(Raster, PolylinesPlotSharedPointsOnce) {
             const std::pair<int, int> v{pts[i].x >> 8, pts[i].y >> 8};
             const auto it = counts.find(v);  // (the half-open rule may leave it to a neighbour)
             ASSERT_LE(it == counts.end() ? 0 : it->second, 1) << "polyline " << k << " point " << i;
+            shared_points_visited += it != counts.end();
         }
     }
+    // Most shared points do get their pixel (the check above is not vacuous): of 500 * 5.
+    EXPECT_GT(shared_points_visited, 1500);
+    RecordProperty("shared_points_visited", static_cast<int>(shared_points_visited));
     // A closed square: 4 segments, every pixel of its outline exactly once.
     const SubPoint sq[] = {to_sub(10.5, 10.5), to_sub(20.5, 10.5), to_sub(20.5, 20.5), to_sub(10.5, 20.5)};
     std::map<std::pair<int, int>, int> counts;
@@ -318,6 +340,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
     std::mt19937 rng(11);
     const int W = 97, H = 61;
     std::uniform_int_distribution<int> band(-5, H + 5), noise(0, 255);
+    int bands_with_pixels = 0;  // the comparisons are not vacuous: most bands hold some line
     for (int k = 0; k < 3000; ++k) {
         const Pattern pat = random_pattern(rng, W, H);
         const LineStyle st = kBandStyles[k % 6];
@@ -331,6 +354,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
         std::vector<Visit> want;
         for (const Visit& v : full)
             if (v.y >= y0 && v.y < y1) want.push_back(v);
+        bands_with_pixels += !want.empty();
         for (const Visit& v : part) ASSERT_TRUE(v.y >= y0 && v.y < y1 && v.x >= 0 && v.x < W) << "pattern " << k;
         if (st.antialias) {
             ASSERT_EQ(part, want) << "pattern " << k << " rows " << y0 << ".." << y1;
@@ -375,6 +399,8 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
             }
         }
     }
+    EXPECT_GT(bands_with_pixels, 1000);
+    RecordProperty("bands_with_pixels", bands_with_pixels);
 }
 
 // Many overlapping polylines drawn band by band, each band's in the same order, over a random
@@ -403,6 +429,7 @@ TEST(Raster, RowBandsTiledMakeTheSamePicture) {
         }
         ASSERT_TRUE(b.canary_intact());
         ASSERT_EQ(a.bytes, b.bytes) << "set " << k << " format " << f.name;
+        ASSERT_NE(a.bytes, Guarded(W, H, f).bytes) << "set " << k << ": nothing was drawn, so nothing was compared";
     }
 }
 

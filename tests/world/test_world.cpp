@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -71,8 +72,11 @@ void check_coasting(double K) {
         ASSERT_NEAR(ref::distance(K, prev, c), step, 1e-12 + tol / 20) << "equal spacing, K=" << K;
         prev = c;
     }
-    std::printf("coasting %s K=%g: worst distance from the geodesic in 120 steps %.3g\n",
-                std::is_same_v<T, double> ? "double" : (std::is_same_v<T, float> ? "float" : "fixed"), K, worst);
+    char key[64], value[32];
+    std::snprintf(key, sizeof key, "coasting_%s_K%g_worst_distance_from_geodesic",
+                  std::is_same_v<T, double> ? "double" : (std::is_same_v<T, float> ? "float" : "fixed"), K);
+    std::snprintf(value, sizeof value, "%.3g", worst);
+    ::testing::Test::RecordProperty(key, value);
 }
 TEST(Physics, CoastingKeepsSpeedAndFollowsOneGeodesicInEqualSteps) {
     for (double K : {-1.0, -0.3, 0.0, 0.4, 1.0}) {
@@ -300,8 +304,10 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
     for (double K : {-1.0, 0.0, 0.7}) {
         World<double> w(s);
         w.K = K;
+        std::size_t checked = 0;  // the line's vertices, checked below
         for (const Body<double>& b : w.bodies) {
             if (b.desc != line && b.desc->name != "grid x=1") continue;
+            checked += b.local.size();
             std::vector<Polar<double>> v(b.local.size());
             w.vertices(b, v.data());
             const Polar<double> foot{1.0, 0.0};
@@ -313,6 +319,8 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
                 }
             }
         }
+        EXPECT_EQ(checked, line->vertices.size()) << "K=" << K << ": the world has the grid line's body, once";
+        EXPECT_GE(checked, 3u) << "K=" << K;
     }
 }
 
@@ -459,7 +467,9 @@ TEST(LongRun, AMillionStepsOfTheKioskCoasting) {
                 double drift = 0;
                 for (std::size_t j = 0; j < w.bodies.size(); ++j)
                     drift = std::max(drift, plane_distance(D(w.bodies[j].centre), wd.bodies[j].centre));
-                std::printf("long run K=0: after %ld steps the fixed bodies are within %.3g of the double ones\n", i, drift);
+                char value[32];
+                std::snprintf(value, sizeof value, "%.3g", drift);
+                RecordProperty("fixed_vs_double_after_" + std::to_string(i) + "_steps", value);
                 worst_drift = std::max(worst_drift, drift);
             }
         }
