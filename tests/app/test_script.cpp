@@ -91,7 +91,7 @@ TEST(Script, ThePlayerGivesEventsWhenDue) {
 
 // A recording's settings lie under the command line: the defaults, then the file, then argv.
 TEST(Options, SettingsAreDefaultsUnderTheCommandLine) {
-    const std::string path = ::testing::TempDir() + "settings.txt";
+    const std::string path = ::testing::TempDir() + "Options.SettingsAreDefaultsUnderTheCommandLine.txt";
     {
         std::FILE* f = std::fopen(path.c_str(), "w");
         ASSERT_NE(f, nullptr);
@@ -120,7 +120,7 @@ TEST(Options, SettingsAreDefaultsUnderTheCommandLine) {
 }
 
 TEST(Options, ABadSettingNamesTheFileAndLine) {
-    const std::string path = ::testing::TempDir() + "bad_settings.txt";
+    const std::string path = ::testing::TempDir() + "Options.ABadSettingNamesTheFileAndLine.txt";
     {
         std::FILE* f = std::fopen(path.c_str(), "w");
         ASSERT_NE(f, nullptr);

@@ -107,6 +107,12 @@ TEST(Attract, APressEndsItReleasesWhatItHeldAndResets) {
 
 // ---- a run through the frame loop, and its replay ----------------------------------------
 
+// A file of this test's own (ctest runs the tests in parallel processes).
+std::string temp_file(const char* what) {
+    const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+    return ::testing::TempDir() + t->test_suite_name() + "." + t->name() + "." + what;
+}
+
 struct Key {
     long frame;  // delivered while waiting for this frame
     Control control;
@@ -159,7 +165,7 @@ struct LiveRun {
 // `noneuclid run` on the scripted display for `frames` frames, recording as --record does.
 LiveRun run_live(app::Options o, const std::vector<Key>& keys, render::PixelFormat format, long resize_at = -1) {
     const world::Scene scene = app::load_scene(o);
-    const std::string path = ::testing::TempDir() + "session_recording.txt";
+    const std::string path = temp_file("recording.txt");
     std::FILE* f = std::fopen(path.c_str(), "w");
     EXPECT_NE(f, nullptr);
     app::Recorder rec(f);
@@ -191,7 +197,7 @@ LiveRun run_live(app::Options o, const std::vector<Key>& keys, render::PixelForm
 app::Picture replay(const std::string& recording, const std::string& drop = "") {
     std::string text = recording;
     if (!drop.empty()) text.erase(text.find(drop), drop.size());
-    const std::string path = ::testing::TempDir() + "session_replay.txt";
+    const std::string path = temp_file("replay.txt");
     std::FILE* f = std::fopen(path.c_str(), "w");
     std::fputs(text.c_str(), f);
     std::fclose(f);
