@@ -97,9 +97,10 @@ kiosk_case() {  # NAME BINARY FRAMEBUFFER
     echo "recorded:"
     cat "$_out.rec"
     check "$1: recorded exactly hold thrust, curvature_down, release" \
-        [ "$(grep -v '^#' "$_out.rec" | cut -d' ' -f2-)" = "$EXPECTED_SEQUENCE" ]
+        [ "$(grep -E '^[0-9]' "$_out.rec" | cut -d' ' -f2-)" = "$EXPECTED_SEQUENCE" ]
     sed -n 's/^noneuclid: \([0-9]*\) frames in .*/\1/p' "$_out.log" > "$_out.frames"
     check "$1: frame count reported" [ -s "$_out.frames" ]
+    check "$1: the recording ends with that frame count" [ "$(sed -n 's/^frames //p' "$_out.rec")" = "$(cat "$_out.frames")" ]
     fb_dump "$3" "$_out"
     check "$1: framebuffer read back" [ -s "$_out.raw" ]
 }
