@@ -30,7 +30,7 @@
 
 #include "geometry/geometry.hpp"
 #include "render/canvas.hpp"
-#include "render/parallel.hpp"
+#include "render/worker_pool.hpp"
 #include "render/raster.hpp"
 #include "world/world.hpp"
 
