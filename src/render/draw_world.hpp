@@ -10,7 +10,7 @@
 // as spans), each body's geometry (vertices, tessellated edges, projection: body_screen_points,
 // into SubPoints with kBreak where the projection cannot show a point) and each body's raster
 // (draw_screen_points). draw_world does them in turn on the calling thread; the overload taking
-// a render::WorkerPool (parallel.hpp) spreads all three over threads started once: first every
+// a render::WorkerPool (worker_pool.hpp) spreads all three over threads started once: first every
 // body's geometry, then bands of rows, each band drawn whole by one thread (its backdrop, then
 // every body clipped to its rows, in the world's order), so every pixel sees the same writes in
 // the same order and the pixels are the same, bit for bit.
@@ -548,17 +548,6 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScrat
 
 // ---- the threaded path --------------------------------------------------------------------
 
-// With bands claimed as they come (ParallelScratch::band_rows set): what the geometry phase
-// leaves for the raster, per body, written by the thread that did the body, read by all. A
-// cache line each: bodies next to each other are done by different threads, and lines written
-// by two cores in turn (false sharing) slowed the frame down.
-struct alignas(64) BodyFrame {
-    std::atomic<uint32_t> ready{0};  // the frame generation whose points these are
-    int32_t top = 0, bottom = 0;     // the points' smallest and largest y, 1/256 px
-    std::size_t count = 0;           // entries at points
-    const SubPoint* points = nullptr;  // in the arena of the thread that did the body
-};
-
 // With one band per thread (home mode): what a thread's geometry leaves for one band's raster,
 // per body of its own that reaches the band, in a list only that thread writes
 // (ParallelScratch::lists), in the world's order; an entry with idx kEnd closes the list. A
@@ -579,8 +568,8 @@ struct BandEntry {
     std::atomic<uint32_t> ready{0};  // the frame generation this entry was written in
 };
 
-// Buffers for draw_world over a WorkerPool: every body's points at once, a BodyFrame per body,
-// each thread's vertices. Sized by prepare.
+// Buffers for draw_world over a WorkerPool: every body's points at once, each thread's band
+// lists and vertices. Sized by prepare.
 //
 // Each thread writes the points of the bodies it does one after the other into an arena of its
 // own (points, thread t's from t * stride_points), so that a core's writes form one stream in
@@ -594,7 +583,6 @@ template <class T>
 struct ParallelScratch {
     std::vector<SubPoint> points;
     std::size_t stride_points = 1;
-    std::unique_ptr<BodyFrame[]> frame;
     // Each thread's vertices and 3-vectors: thread t's start at t * stride, slices whole cache
     // lines apart (no line written by two threads).
     std::vector<geo::Polar<T>> vertices;
@@ -602,7 +590,6 @@ struct ParallelScratch {
     std::size_t stride_v = 1, stride_vec = 1;
     std::size_t bodies = 0;
     uint32_t generation = 0;
-    int band_rows = 0;  // rows per band of the raster; 0: one band per thread, bodies by home (below)
     // One band per thread: thread t's band is rows [edge[t], edge[t + 1]) (rounded), moved after
     // each frame towards equal busy time (balance_bands) unless balance is false. Empty: equal
     // bands (set again whenever the canvas height or the pool changes).
@@ -610,7 +597,7 @@ struct ParallelScratch {
     bool balance = true;
     struct alignas(64) Busy {
         double seconds = 0;   // the thread's time in the last frame, waits for other threads left out
-        double geometry = 0;  // of which its geometry phase (the bodies' steps included), for benchmarks
+        double geometry = 0;  // of which its geometry phase, for benchmarks
         double waited = 0;    // and the time it waited for another thread's bodies
     };
     std::unique_ptr<Busy[]> busy;
@@ -644,7 +631,6 @@ struct ParallelScratch {
         stride_v = stride(sizeof(geo::Polar<T>)), stride_vec = stride(sizeof(geo::Vec3<T>));
         vertices.resize(stride_v * static_cast<std::size_t>(pool.size()));
         vectors.resize(stride_vec * static_cast<std::size_t>(pool.size()));
-        frame.reset(new BodyFrame[bodies > 0 ? bodies : 1]);
         stride_list = bodies + 1 + (64 + sizeof(BandEntry) - 1) / sizeof(BandEntry);
         const std::size_t threads = static_cast<std::size_t>(pool.size());
         list_entries = stride_list * threads * threads;
@@ -665,7 +651,6 @@ struct ParallelScratch {
     uint32_t next_generation() {
         if (++generation == 0) {
             for (std::size_t i = 0; i < list_entries; ++i) lists[i].ready.store(0, std::memory_order_relaxed);
-            for (std::size_t i = 0; i < bodies; ++i) frame[i].ready.store(0, std::memory_order_relaxed);
             generation = 1;
         }
         return generation;
@@ -717,77 +702,44 @@ inline RowSpan row_span(const SubPoint* pts, std::size_t n) {
     return {up == INT32_MIN ? INT32_MAX : -up, down};
 }
 
-namespace detail {
-// The threaded frame (draw_world and step_and_draw below): before(i) is called for body i on
-// the thread that claimed it, just before its geometry.
-template <class W, class Before>
-void parallel_frame(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
-                    WorkerPool& pool, bool backdrop, Before&& before);
-}  // namespace detail
-
 // The same frame as draw_world(c, world, o, DrawScratch), pixel for pixel, on pool.size()
-// threads, in one pool.run:
-//  1. geometry: each thread computes its bodies' screen points and the rows they span. By
-//     default these are its home bodies (ParallelScratch::home), each entered in the list of
-//     every band it reaches (BandEntry); with band_rows set, bodies claimed from an atomic
-//     counter, each leaving a BodyFrame. An entry's or a frame's flag says it is ready;
-//  2. raster: bands of rows (by default one per thread, thread t band t, their edges moved
-//     frame by frame to even out the threads' times; with band_rows set, claimed as they
-//     come), each drawn whole: its backdrop, then every body's lines clipped to the band
-//     (RowRange: exactly the pixels the whole line has there), in the world's order, waiting
-//     (yielding) for what another thread has not written yet. Bands are disjoint, so no two
-//     threads write one pixel, and each pixel gets the same writes in the same order as on one
-//     thread.
-// The scratch must have been prepared for this world and this pool.
+// threads, in one pool.run, with one band of rows per thread (thread t draws band t):
+//  1. geometry: each thread computes the screen points of its home bodies
+//     (ParallelScratch::home) and the rows they span, and enters each body in its list for
+//     every band it reaches (BandEntry). An entry's flag says it is ready;
+//  2. raster: each thread draws its band whole: its backdrop, then every body's lines clipped
+//     to the band (RowRange: exactly the pixels the whole line has there), in the world's
+//     order (the threads' lists for the band merged), waiting (yielding) for what another
+//     thread has not written yet. Bands are disjoint, so no two threads write one pixel, and
+//     each pixel gets the same writes in the same order as on one thread.
+// The bands' edges move frame by frame to even out the threads' times (balance_bands). A pool
+// of more than 255 threads, or a canvas with fewer rows than threads, is drawn on the calling
+// thread alone. The scratch must have been prepared for this world and this pool.
 template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
                 WorkerPool& pool, bool backdrop = true) {
-    detail::parallel_frame(c, world, o, s, pool, backdrop, [](std::size_t) {});
-}
-
-// world.step(dt) then draw_world(c, world, o, s, pool): the same bits in the world and the same
-// pixels, with the bodies' steps spread over the threads too: a body is stepped by the thread
-// that claims it for its geometry, just before (World::step_body; a body's step and geometry
-// read and write nothing of another body's).
-template <class W>
-void step_and_draw(const Canvas& c, W& world, typename W::scalar dt, const DrawOptions& o,
-                   ParallelScratch<typename W::scalar>& s, WorkerPool& pool, bool backdrop = true) {
-    world.begin_step(dt);
-    const std::size_t n = std::min(s.bodies, world.bodies.size());
-    detail::parallel_frame(c, world, o, s, pool, backdrop, [&world, dt](std::size_t i) { world.step_body(world.bodies[i], dt); });
-    for (std::size_t i = n; i < world.bodies.size(); ++i) world.step_body(world.bodies[i], dt);  // (a scratch too small)
-    world.end_step(dt);
-}
-
-template <class W, class Before>
-void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
-                            WorkerPool& pool, bool backdrop, Before&& before) {
     using T = typename W::scalar;
     const ScreenMap<T> m = ScreenMap<T>::of(c, world.R);
     const int threads = pool.size();
-    // Home mode (ParallelScratch::home): one band per thread, thread t draws band t and does the
-    // geometry of the bodies whose points lay mostly in it last frame. Measured on stress at
-    // 800x480, 2 threads (bench_parallel): with four bands per thread and bodies claimed as they
-    // come, reading the points and frame data the other core had just written cost more than
-    // the split saved (fixed 1.19x); one band each, 1.36x; and home bodies, 1.38-1.41x (double
-    // 1.37-1.51x, then 1.67-1.84x); with each thread's points in its own arena (ParallelScratch)
-    // and balanced edges, 1.78x. The pixels are the same whatever thread does what.
-    // The bands' edges move to even out the threads' times (balance_bands): with equal bands
-    // the worker thread finished 1-20 us after the caller (stress, 800x480, fixed).
-    const bool homes = threads > 1 && threads <= 255 && s.band_rows == 0 && c.height() >= threads;
-    const int band_rows = s.band_rows > 0 ? s.band_rows : std::max(1, (c.height() + threads - 1) / threads);
-    const int bands = homes ? threads : (c.height() + band_rows - 1) / band_rows;
-    if (homes && (s.edge.size() != static_cast<std::size_t>(threads) + 1 || s.edge.back() != c.height())) {
+    const LineStyle line{o.antialias, o.line_width};
+    const int nb = static_cast<int>(std::min(s.bodies, world.bodies.size()));
+    if (threads > 255 || c.height() < threads) {
+        if (backdrop) draw_backdrop(c, m, world.R, o);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(nb); ++i) {
+            const auto& b = world.bodies[i];
+            if (b.desc->grid ? !o.grids : !o.bodies) continue;
+            const std::size_t n = body_screen_points(world, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+            draw_screen_points(c, s.points.data(), n, body_color(b), line);
+        }
+        return;
+    }
+    if (s.edge.size() != static_cast<std::size_t>(threads) + 1 || s.edge.back() != c.height()) {
         s.edge.resize(static_cast<std::size_t>(threads) + 1);
         for (int t = 0; t <= threads; ++t) s.edge[static_cast<std::size_t>(t)] = double(c.height()) * t / threads;
     }
-    int row[256];  // home mode: band t is rows [row[t], row[t + 1])
-    if (homes)
-        for (int t = 0; t <= threads; ++t) row[t] = static_cast<int>(std::lround(s.edge[static_cast<std::size_t>(t)]));
-    const int nb = static_cast<int>(std::min(s.bodies, world.bodies.size()));
+    int row[256];  // band t is rows [row[t], row[t + 1])
+    for (int t = 0; t <= threads; ++t) row[t] = static_cast<int>(std::lround(s.edge[static_cast<std::size_t>(t)]));
     const uint32_t gen = s.next_generation();
-    std::atomic<int> next_body{0}, next_band{0};
-    const LineStyle line{o.antialias, o.line_width};
     const int64_t margin = row_margin(line);  // a body's pixels lie within its points' rows widened by this
     // Whether a body whose points span rows [top, bottom] (1/256 px) can put pixels in rows [y0, y1).
     auto reaches = [margin](int y0, int y1, int32_t top, int32_t bottom) {
@@ -808,116 +760,81 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
         geo::Polar<T>* verts = s.vertices.data() + s.stride_v * static_cast<std::size_t>(tid);
         geo::Vec3<T>* vecs = s.vectors.data() + s.stride_vec * static_cast<std::size_t>(tid);
         SubPoint* arena = s.points.data() + s.stride_points * static_cast<std::size_t>(tid);
-        // Bodies are claimed four at a time: neighbours in memory (World::bodies) mostly stay on
-        // one core (measured: ~5% faster for fixed stress than one by one).
-        constexpr int kClaim = 4;
-        BandEntry* list[256];  // home mode: this thread's list for band k, and its length
+        BandEntry* list[256];  // this thread's list for band k, and its length
         uint32_t listed[256];
-        if (homes)
-            for (int k = 0; k < threads; ++k)
-                list[k] = s.list(tid, k, threads), listed[k] = 0;
+        for (int k = 0; k < threads; ++k) list[k] = s.list(tid, k, threads), listed[k] = 0;
         auto do_body = [&](std::size_t idx) {
-            before(idx);
             const auto& b = world.bodies[idx];
             SubPoint* pts = arena;
             const std::size_t n = (b.desc->grid ? !o.grids : !o.bodies) ? 0 : body_screen_points(world, b, m, o, verts, vecs, pts);
             const RowSpan span = row_span(pts, n);
             const int32_t top = span.top, bottom = span.bottom;
-            if (homes) {  // next frame's home: the band of the points' middle row
-                uint8_t h = s.home[gen & 1][idx];
-                if (top <= bottom) {
-                    const int64_t mid = (int64_t{top} + bottom) / 2 / kSub;
-                    h = 0;
-                    while (h + 1 < threads && mid >= row[h + 1]) ++h;
-                }
-                // Written only when it changes (rarely): the threads' bodies share these lines.
-                if (s.home[(gen + 1) & 1][idx] != h) s.home[(gen + 1) & 1][idx] = h;
-                for (int k = 0; k < threads && n > 0; ++k) {  // the bands it reaches
-                    if (!reaches(row[k], row[k + 1], top, bottom)) continue;
-                    BandEntry& e = list[k][listed[k]++];
-                    e.top = top, e.bottom = bottom, e.count = static_cast<uint32_t>(n), e.idx = static_cast<uint32_t>(idx);
-                    e.points = pts, e.color = body_color(b);
-                    e.ready.store(gen, std::memory_order_release);
-                }
-                arena += ParallelScratch<T>::arena_step(n);
-                return;
+            // next frame's home: the band of the points' middle row
+            uint8_t h = s.home[gen & 1][idx];
+            if (top <= bottom) {
+                const int64_t mid = (int64_t{top} + bottom) / 2 / kSub;
+                h = 0;
+                while (h + 1 < threads && mid >= row[h + 1]) ++h;
             }
-            BodyFrame& f = s.frame[idx];
-            f.count = n, f.top = top, f.bottom = bottom, f.points = pts;
-            arena += ParallelScratch<T>::arena_step(n);
-            f.ready.store(gen, std::memory_order_release);
-        };
-        if (homes) {
-            const uint8_t* home = s.home[gen & 1].data();
-            auto next_home = [home, nb, tid](int i) {  // this thread's next body after i (nb: none)
-                do ++i;
-                while (i < nb && home[i] != tid);
-                return i;
-            };
-            // The body two ahead is fetched, for writing, while this one is done. Each core's
-            // hardware prefetchers, following its bodies' addresses, take lines of the other
-            // core's bodies between them: a step found its body's first line (the state it
-            // writes) gone to the other core for 15-25% of the bodies (stress, 800x480, while a
-            // line took 400-600 ns to the other core and back; time stamps around a first read
-            // of it), and for 1.3% with the prefetch.
-            constexpr int kAhead = 2;
-            int ahead = -1;
-            for (int k = 0; k <= kAhead; ++k) ahead = next_home(ahead);
-            for (int i = next_home(-1); i < nb; i = next_home(i)) {
-                if (ahead < nb) {
-                    WorkerPool::prefetch_for_write(&world.bodies[static_cast<std::size_t>(ahead)]);
-                    ahead = next_home(ahead);
-                }
-                do_body(static_cast<std::size_t>(i));
-            }
-            for (int k = 0; k < threads; ++k) {  // close the lists
-                BandEntry& e = list[k][listed[k]];
-                e.idx = BandEntry::kEnd;
+            // Written only when it changes (rarely): the threads' bodies share these lines.
+            if (s.home[(gen + 1) & 1][idx] != h) s.home[(gen + 1) & 1][idx] = h;
+            for (int k = 0; k < threads && n > 0; ++k) {  // the bands it reaches
+                if (!reaches(row[k], row[k + 1], top, bottom)) continue;
+                BandEntry& e = list[k][listed[k]++];
+                e.top = top, e.bottom = bottom, e.count = static_cast<uint32_t>(n), e.idx = static_cast<uint32_t>(idx);
+                e.points = pts, e.color = body_color(b);
                 e.ready.store(gen, std::memory_order_release);
             }
-        } else {
-            for (int first; (first = next_body.fetch_add(kClaim, std::memory_order_relaxed)) < nb;)
-                for (int i = first; i < first + kClaim && i < nb; ++i) do_body(static_cast<std::size_t>(i));
+            arena += ParallelScratch<T>::arena_step(n);
+        };
+        const uint8_t* home = s.home[gen & 1].data();
+        auto next_home = [home, nb, tid](int i) {  // this thread's next body after i (nb: none)
+            do ++i;
+            while (i < nb && home[i] != tid);
+            return i;
+        };
+        // The body two ahead is fetched, for writing, while this one is done. Each core's
+        // hardware prefetchers, following its bodies' addresses, take lines of the other
+        // core's bodies between them: a step found its body's first line (the state it
+        // writes) gone to the other core for 15-25% of the bodies (stress, 800x480, while a
+        // line took 400-600 ns to the other core and back; time stamps around a first read
+        // of it), and for 1.3% with the prefetch.
+        constexpr int kAhead = 2;
+        int ahead = -1;
+        for (int k = 0; k <= kAhead; ++k) ahead = next_home(ahead);
+        for (int i = next_home(-1); i < nb; i = next_home(i)) {
+            if (ahead < nb) {
+                WorkerPool::prefetch_for_write(&world.bodies[static_cast<std::size_t>(ahead)]);
+                ahead = next_home(ahead);
+            }
+            do_body(static_cast<std::size_t>(i));
         }
-        auto draw_band = [&](int k) {  // with band_rows set
-            const int y0 = k * band_rows, y1 = std::min(y0 + band_rows, c.height());
-            if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
-            for (int i = 0; i < nb; ++i) {
-                const std::size_t idx = static_cast<std::size_t>(i);
-                const BodyFrame& f = s.frame[idx];
-                if (f.ready.load(std::memory_order_acquire) != gen) {
+        for (int k = 0; k < threads; ++k) {  // close the lists
+            BandEntry& e = list[k][listed[k]];
+            e.idx = BandEntry::kEnd;
+            e.ready.store(gen, std::memory_order_release);
+        }
+        const clock::time_point geometry_done = clock::now();
+        // thread t draws band t, the one whose bodies it did: the threads' lists merged
+        const int y0 = row[tid], y1 = row[tid + 1];
+        if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
+        const BandEntry* head[256];
+        for (int u = 0; u < threads; ++u) head[u] = s.list(u, tid, threads);
+        for (;;) {
+            int first = -1;  // the thread whose next entry has the least idx
+            uint32_t least = BandEntry::kEnd;
+            for (int u = 0; u < threads; ++u) {
+                const BandEntry& e = *head[u];
+                if (e.ready.load(std::memory_order_acquire) != gen) {
                     const clock::time_point w0 = clock::now();
-                    while (f.ready.load(std::memory_order_acquire) != gen) WorkerPool::pause();
+                    while (e.ready.load(std::memory_order_acquire) != gen) WorkerPool::pause();
                     waited += clock::now() - w0;
                 }
-                if (f.count == 0 || !reaches(y0, y1, f.top, f.bottom)) continue;
-                draw_in_band(y0, y1, f.points, f.count, body_color(world.bodies[idx]), f.top, f.bottom);
+                if (e.idx < least) least = e.idx, first = u;
             }
-        };
-        const clock::time_point geometry_done = clock::now();
-        if (homes) {  // thread t draws band t, the one whose bodies it did: the threads' lists merged
-            const int y0 = row[tid], y1 = row[tid + 1];
-            if (backdrop) draw_backdrop_rows(c, m, world.R, o, y0, y1);
-            const BandEntry* head[256];
-            for (int u = 0; u < threads; ++u) head[u] = s.list(u, tid, threads);
-            for (;;) {
-                int first = -1;  // the thread whose next entry has the least idx
-                uint32_t least = BandEntry::kEnd;
-                for (int u = 0; u < threads; ++u) {
-                    const BandEntry& e = *head[u];
-                    if (e.ready.load(std::memory_order_acquire) != gen) {
-                        const clock::time_point w0 = clock::now();
-                        while (e.ready.load(std::memory_order_acquire) != gen) WorkerPool::pause();
-                        waited += clock::now() - w0;
-                    }
-                    if (e.idx < least) least = e.idx, first = u;
-                }
-                if (first < 0) break;  // every list closed
-                const BandEntry& e = *head[first]++;
-                draw_in_band(y0, y1, e.points, e.count, e.color, e.top, e.bottom);
-            }
-        } else {
-            for (int k; (k = next_band.fetch_add(1, std::memory_order_relaxed)) < bands;) draw_band(k);
+            if (first < 0) break;  // every list closed
+            const BandEntry& e = *head[first]++;
+            draw_in_band(y0, y1, e.points, e.count, e.color, e.top, e.bottom);
         }
         auto seconds = [](clock::duration d) { return std::chrono::duration<double>(d).count(); };
         auto& mine = s.busy[static_cast<std::size_t>(tid)];
@@ -925,7 +842,7 @@ void detail::parallel_frame(const Canvas& c, const W& world, const DrawOptions& 
         mine.geometry = seconds(geometry_done - started), mine.waited = seconds(waited);
     };
     pool.run(job);
-    if (homes && s.balance) {
+    if (s.balance) {
         double busy[256];
         for (int t = 0; t < threads; ++t) busy[t] = s.busy[t].seconds;
         balance_bands(s.edge, busy, s.smoothed);

@@ -152,17 +152,6 @@ public:
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 
     void step(T dt) {
-        begin_step(dt);
-        for (Body<T>& b : bodies) step_body(b, dt);
-        end_step(dt);
-    }
-
-    // step(dt) in three parts, for a caller that spreads the bodies over threads (render::
-    // step_and_draw): begin_step (the curvature, the held keys' thrust and turn), then
-    // step_body for every body, in any order, on any thread (a body's step reads K, R, the held
-    // keys and the body, and writes only the body), then end_step (the clock). The same bits
-    // as step(dt).
-    void begin_step(T dt) {
         const int dk = held(Action::curvature_up) - held(Action::curvature_down);
         if (dk != 0) K = clamp_k(K + T(scene_.curvature_rate) * dt * T(dk));
         if (scene_.sweep_rate != 0) {
@@ -170,37 +159,9 @@ public:
             if (K >= T(1)) K = T(1), sweep_dir_ = -1;
             if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
         }
-        thrust_ = T(scene_.thrust);
-        turn_ = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
-        thrusting_ = held(Action::thrust);
-    }
-    void step_body(Body<T>& b, T dt) const {
-        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
-        using std::atan2, std::cos, std::sin;
-        T a = b.accel, adir = b.accel_dir;
-        if (b.desc->controlled && thrusting_) a = thrust_, adir = b.facing;
-        if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
-            const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
-            const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
-            b.speed = hypot(vx, vy);
-            if (b.speed != T(0)) b.travel = atan2(vy, vx);
-        }
-        if (b.speed != T(0)) {
-            const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
-            const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
-            b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
-            b.centre = p.centre;
-            b.travel = p.travel;
-            b.facing = p.facing;
-        }
-        const T spin = b.desc->controlled ? b.spin + turn_ : b.spin;
-        if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
-        if (b.centre.r > R) {  // the limit circle
-            const T r = T(2) * R - b.centre.r;
-            b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
-        }
-    }
-    void end_step(T dt) {
+        const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
+        const Steering steer{T(scene_.thrust), turn, held(Action::thrust)};
+        for (Body<T>& b : bodies) step_body(b, dt, steer);
         time += static_cast<double>(dt);
         ++frame;
     }
@@ -253,6 +214,38 @@ public:
 
 private:
     static constexpr double kDegree = 3.14159265358979323846 / 180;
+    // What the held keys do to the controlled body this step: thrust along its facing, turn.
+    struct Steering {
+        T thrust{}, turn{};
+        bool thrusting = false;
+    };
+    // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
+    void step_body(Body<T>& b, T dt, const Steering& steer) const {
+        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
+        using std::atan2, std::cos, std::sin;
+        T a = b.accel, adir = b.accel_dir;
+        if (b.desc->controlled && steer.thrusting) a = steer.thrust, adir = b.facing;
+        if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
+            const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
+            const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
+            b.speed = hypot(vx, vy);
+            if (b.speed != T(0)) b.travel = atan2(vy, vx);
+        }
+        if (b.speed != T(0)) {
+            const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
+            const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
+            b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
+            b.centre = p.centre;
+            b.travel = p.travel;
+            b.facing = p.facing;
+        }
+        const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
+        if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
+        if (b.centre.r > R) {  // the limit circle
+            const T r = T(2) * R - b.centre.r;
+            b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
+        }
+    }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {
         Body<T> b;
@@ -295,8 +288,6 @@ private:
     T initial_K_{};
     int sweep_dir_ = 1;
     bool held_[kActionCount] = {};
-    T thrust_{}, turn_{};  // this step's, set by begin_step
-    bool thrusting_ = false;
 };
 
 }  // namespace noneuclid::world
