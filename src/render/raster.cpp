@@ -622,15 +622,9 @@ void shade_outside_circle(const Canvas& c, double cx, double cy, double r, Rgb s
             c.blend(x, y, shade, blend_alpha);
     };
     for (int y = 0; y < c.height(); ++y) {
-        const double dy = y + 0.5 - cy;
-        int in0 = 0, in1 = -1;  // columns whose centre is inside: [in0, in1]
-        if (std::fabs(dy) < r) {
-            const double half = std::sqrt(r * r - dy * dy);
-            in0 = static_cast<int>(std::fmax(-1.0, std::floor(cx - half - 0.5) + 1));
-            in1 = static_cast<int>(std::fmin(c.width(), std::ceil(cx + half - 0.5) - 1));
-        }
+        const ColumnSpan in = columns_inside_circle(cx, cy, r, y, c.width());
         for (int x = 0; x < c.width(); ++x)
-            if (x < in0 || x > in1) put(x, y);
+            if (x < in.first || x > in.last) put(x, y);
     }
 }
 

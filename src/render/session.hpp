@@ -13,7 +13,7 @@
 #include <iterator>
 
 #include "render/draw_world.hpp"
-#include "render/worker_pool.hpp"
+#include "render/parallel_frame.hpp"
 #include "render/hud.hpp"
 #include "world/attract.hpp"
 #include "world/controls.hpp"

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 #include "fastest.hpp"
 
 namespace {

@@ -18,6 +18,7 @@
 
 #include "render/blit.hpp"
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 

@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 

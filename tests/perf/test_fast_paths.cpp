@@ -660,7 +660,7 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
                     vertices_outside += vecs[i].w < fixed(-0.5);
                 }
                 render::detail::Cursor cur;
-                auto emit = [&](int, bool vis, fixed X, fixed Y) { cur = render::detail::put_point(ref.data(), cur, m, vis, X, Y); };
+                auto emit = [&](int, bool vis, fixed X, fixed Y) { render::detail::put_point(ref.data(), cur, m, vis, X, Y); };
                 if (edges == 0) {
                     const auto pp = geo::project_vec(w.K, vecs[0], o.projection);
                     emit(0, pp.visible, pp.X, pp.Y);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 
