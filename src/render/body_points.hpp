@@ -14,6 +14,7 @@
 #include "render/fixed_points.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
+#include "render/shape_cache.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::render {
@@ -26,15 +27,16 @@ std::size_t body_point_capacity(const B& b) {
 
 // One body's geometry: its vertices, its edges tessellated at the body's level, projected and
 // mapped to the screen, into out (room for body_point_capacity(b)) as one polyline with kBreak
-// where a point cannot be shown. Returns the number of entries written. Writes only verts,
-// vecs, out and the body's own shape cache (World::shape, refreshed if K changed): bodies can
-// be done on different threads at once. vecs (room for b.local.size()) receives the vertices'
+// where a point cannot be shown. Returns the number of entries written. Writes only shape (the
+// body's cache, made for it: refreshed if K changed), verts, vecs and out: bodies can be done
+// on different threads at once. vecs (room for b.local.size()) receives the vertices'
 // 3-vectors; verts (room for b.local.size()) their polar positions with the paper's engine,
 // and is scratch otherwise.
 template <class W>
 std::size_t body_screen_points(const W& world, const world::Body<typename W::scalar>& b,
-                               const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-                               geo::Polar<typename W::scalar>* verts, geo::Vec3<typename W::scalar>* vecs, SubPoint* out) {
+                               ShapeCache<typename W::scalar>& shape, const ScreenMap<typename W::scalar>& m,
+                               const DrawOptions& o, geo::Polar<typename W::scalar>* verts,
+                               geo::Vec3<typename W::scalar>* vecs, SubPoint* out) {
     using T = typename W::scalar;
     const std::size_t n = b.local.size();
     if (n == 0) return 0;
@@ -51,7 +53,7 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
         // motion applied to its local 3-vectors, each edge's points its cached slerp weights
         // applied to its ends, and every point goes straight to the projection plane. An edge's
         // first point is the previous edge's last.
-        const world::ShapeCache<T>& sh = world.shape(b);
+        const ShapeCache<T>& sh = shape.refresh(world.K, b);
         const geo::Motion<T> motion = geo::body_motion(world.K, b.centre, b.facing);
         const geo::MotionApply<T> apply(motion);
         apply(sh.local.data(), vecs, n);

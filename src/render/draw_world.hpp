@@ -25,16 +25,19 @@
 #include "render/draw_options.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
+#include "render/shape_cache.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::render {
 
-// Buffers for drawing one body at a time: its points, vertices and 3-vectors. Sized by prepare.
+// Buffers for drawing one body at a time (its points, vertices and 3-vectors), and every
+// body's shape cache. Sized by prepare, for this world: prepare again for another world.
 template <class T>
 struct DrawScratch {
     std::vector<SubPoint> points;
     std::vector<geo::Polar<T>> vertices;  // body_screen_points' verts and vecs
     std::vector<geo::Vec3<T>> vectors;
+    std::vector<ShapeCache<T>> shapes;    // world.bodies[i]'s is shapes[i]
     template <class W>
     void prepare(const W& world) {
         std::size_t most = 1, most_v = 1;
@@ -45,14 +48,17 @@ struct DrawScratch {
         points.resize(most);
         vertices.resize(most_v);
         vectors.resize(most_v);
+        make_shape_caches(world, shapes);
     }
 };
 
-// One body's outline.
+// The outline of world.bodies[i].
 template <class W>
-void draw_body(const Canvas& c, const W& world, const world::Body<typename W::scalar>& b, const ScreenMap<typename W::scalar>& m,
-               const DrawOptions& o, DrawScratch<typename W::scalar>& s) {
-    const std::size_t count = body_screen_points(world, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+void draw_body(const Canvas& c, const W& world, std::size_t i, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
+               DrawScratch<typename W::scalar>& s) {
+    const auto& b = world.bodies[i];
+    const std::size_t count =
+        body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
     draw_screen_points(c, s.points.data(), count, body_color(b), LineStyle{o.antialias, o.line_width});
 }
 
@@ -64,9 +70,8 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScrat
     using T = typename W::scalar;
     const ScreenMap<T> m = ScreenMap<T>::of(c, world.R);
     if (backdrop) draw_backdrop(c, m, world.R, o);
-    for (const auto& b : world.bodies) {
-        if (body_shown(b, o)) draw_body(c, world, b, m, o, s);
-    }
+    for (std::size_t i = 0; i < world.bodies.size(); ++i)
+        if (body_shown(world.bodies[i], o)) draw_body(c, world, i, m, o, s);
 }
 
 }  // namespace noneuclid::render

@@ -31,6 +31,7 @@
 #include "render/draw_options.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
+#include "render/shape_cache.hpp"
 #include "render/worker_pool.hpp"
 #include "world/world.hpp"
 
@@ -105,7 +106,8 @@ protected:
 };
 
 // Buffers for draw_world over a WorkerPool: every body's points at once, each thread's band
-// lists, vertices and 3-vectors. Sized by prepare, for this world and this pool.
+// lists, vertices and 3-vectors, every body's shape cache. Sized by prepare, for this world and
+// this pool: prepare again for another.
 template <class T>
 struct ParallelScratch : ParallelScratchBase {
     // Each thread's vertices and 3-vectors: thread t's start at t * stride, slices whole cache
@@ -113,6 +115,7 @@ struct ParallelScratch : ParallelScratchBase {
     std::vector<geo::Polar<T>> vertices;
     std::vector<geo::Vec3<T>> vectors;
     std::size_t stride_v = 1, stride_vec = 1;
+    std::vector<ShapeCache<T>> shapes;  // world.bodies[i]'s is shapes[i], refreshed by the thread that does it
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
@@ -128,6 +131,7 @@ struct ParallelScratch : ParallelScratchBase {
         stride_v = stride(sizeof(geo::Polar<T>)), stride_vec = stride(sizeof(geo::Vec3<T>));
         vertices.resize(stride_v * static_cast<std::size_t>(pool.size()));
         vectors.resize(stride_vec * static_cast<std::size_t>(pool.size()));
+        make_shape_caches(world, shapes);
     }
 };
 
@@ -237,7 +241,7 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
         const std::size_t idx = static_cast<std::size_t>(i);
         const auto& b = world.bodies[idx];
         SubPoint* pts = arena;
-        const std::size_t n = body_shown(b, o) ? body_screen_points(world, b, m, o, verts, vecs, pts) : 0;
+        const std::size_t n = body_shown(b, o) ? body_screen_points(world, b, s.shapes[idx], m, o, verts, vecs, pts) : 0;
         const RowSpan span = row_span(pts, n);
         // Next frame's home: the band of the points' middle row. Written only when it changes
         // (rarely): the threads' bodies share these cache lines.
@@ -271,7 +275,8 @@ void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::
     for (std::size_t i = 0; i < nb; ++i) {
         const auto& b = world.bodies[i];
         if (!body_shown(b, o)) continue;
-        const std::size_t n = body_screen_points(world, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+        const std::size_t n =
+            body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
         draw_screen_points(c, s.points.data(), n, body_color(b), LineStyle{o.antialias, o.line_width});
     }
 }

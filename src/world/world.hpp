@@ -51,27 +51,6 @@ inline bool parse_action(const std::string& s, Action& out) {
     return false;
 }
 
-// What drawing a rigid body needs that changes only with K (World::shape): each vertex as its
-// local 3-vector about the centre, each edge's slerp weights (a rigid motion keeps the edge's
-// length, so they come from the local polar vertices). Sized when the body is made; refreshed
-// in place, without allocating, when K differs from the K they were made at.
-template <class T>
-struct ShapeCache {
-    T K{};
-    bool valid = false;
-    std::vector<geo::Vec3<T>> local;  // per vertex
-    std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
-    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k): weights_of(e)
-    std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
-    // Set once, whatever K: each vertex's (cos phi, sin phi), each edge's sine_of_half(phi1 - phi2).
-    std::vector<T> cos_phi, sin_phi;
-    std::vector<geo::HalfSine<T>> half_sine;
-    std::size_t per_edge = 0;  // 2 (level - 1): the weights of one edge
-    bool any_antipodal = false;  // whether any edge is antipodal
-    T* weights_of(std::size_t e) { return weights.data() + e * per_edge; }
-    const T* weights_of(std::size_t e) const { return weights.data() + e * per_edge; }
-};
-
 template <class T>
 struct alignas(64) Body {
     Polar<T> centre;
@@ -79,9 +58,6 @@ struct alignas(64) Body {
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
     int64_t step_carry = 0;       // what speed * dt rounding left over (fixed point)
     const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
-    // World::shape's cache. Mutable: a const world refreshes it when drawn after K changed. One
-    // body is drawn by one thread at a time (draw_world's threaded overload hands out bodies).
-    mutable ShapeCache<T> shape;
 };
 
 // The engine's geometry: the exact forms, or the paper's (double only).
@@ -189,29 +165,6 @@ public:
         for (std::size_t i = 0; i < b.local.size(); ++i) out[i] = engine::vertex(K, b.centre, b.facing, b.local[i]);
     }
 
-    // The body's shape at the current K (ShapeCache), refreshed first if K changed since.
-    const ShapeCache<T>& shape(const Body<T>& b) const {
-        ShapeCache<T>& c = b.shape;
-        if (c.valid && c.K == K) return c;
-        const std::size_t n = b.local.size(), edges = c.antipodal.size();
-        const int level = b.desc->tessellation;
-        for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
-            const T rho = b.local[i].r, s = geo::S_K(K, rho);
-            c.local[i] = {geo::C_K(K, rho), s * c.cos_phi[i], s * c.sin_phi[i]};
-            c.root[i] = geo::clamped_root(s);
-        }
-        c.any_antipodal = false;
-        for (std::size_t e = 0; e < edges; ++e) {
-            const std::size_t f = (e + 1) % n;
-            // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
-            const T d = geo::distance_from(K, b.local[e].r, b.local[f].r, c.root[e], c.root[f], c.half_sine[e]);
-            c.antipodal[e] = !geo::slerp_weights(K, d, level, c.weights_of(e));
-            c.any_antipodal = c.any_antipodal || c.antipodal[e];
-        }
-        c.K = K, c.valid = true;
-        return c;
-    }
-
 private:
     static constexpr double kDegree = 3.14159265358979323846 / 180;
     // What the held keys do to the controlled body this step: thrust along its facing, turn.
@@ -257,20 +210,6 @@ private:
         b.accel_dir = geo::wrap_pi(T(sb.accel_direction_deg * kDegree));
         b.spin = T(sb.spin_deg * kDegree);
         for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
-        const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (sb.closed ? n : n - 1);
-        b.shape.local.resize(n);
-        b.shape.root.resize(n);
-        b.shape.antipodal.resize(edges);
-        for (const Polar<T>& v : b.local) {
-            using std::cos, std::sin;
-            b.shape.cos_phi.push_back(cos(v.theta));
-            b.shape.sin_phi.push_back(sin(v.theta));
-        }
-        using geo::sine_of_half;  // and fx::sine_of_half by ADL
-        for (std::size_t e = 0; e < edges; ++e)
-            b.shape.half_sine.push_back(sine_of_half(b.local[e].theta - b.local[(e + 1) % n].theta));
-        b.shape.per_edge = static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0);
-        b.shape.weights.resize(edges * b.shape.per_edge);
         return b;
     }
     void copy_from(const World& o) {

@@ -47,7 +47,9 @@ void run(benchmark::State& st, Point p, bool raster) {
         if (raster)
             render::draw_world(c, wd, o, scratch, false);
         else
-            for (const auto& b : wd.bodies) benchmark::DoNotOptimize(render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), scratch.points.data()));
+            for (std::size_t i = 0; i < wd.bodies.size(); ++i)
+                benchmark::DoNotOptimize(render::body_screen_points(wd, wd.bodies[i], scratch.shapes[i], m, o, scratch.vertices.data(),
+                                                                    scratch.vectors.data(), scratch.points.data()));
         benchmark::ClobberMemory();
     }
     st.counters["points"] = static_cast<double>(p.s) * p.v * p.i;

@@ -277,7 +277,7 @@ TEST(FastPaths, BackdropSpansAreClearPlusShade) {
                 }
 }
 
-// The draw's 3-vector path (body_screen_points: World::shape's local 3-vectors and slerp
+// The draw's 3-vector path (body_screen_points: the shape cache's local 3-vectors and slerp
 // weights cached per K, the body's motion as a matrix, project_vec for every point) against the
 // polar path computed in double from the same state (walk_end vertices, edge_points,
 // project_polar): screen points in px at 800x480, breaks where a point is hidden. The polar
@@ -354,14 +354,16 @@ PathErr body_path_error(const char* scene_name, double K0, geo::Projection proj)
         const double K = static_cast<double>(w.K);
         const auto m = render::ScreenMap<T>::of(800, 480, w.R);
         const auto md = render::ScreenMap<double>::of(800, 480, static_cast<double>(w.R));
-        for (const auto& b : w.bodies) {
+        for (std::size_t bi = 0; bi < w.bodies.size(); ++bi) {
+            const auto& b = w.bodies[bi];
             const double c_r = static_cast<double>(b.centre.r), c_t = static_cast<double>(b.centre.theta);
             const double facing = static_cast<double>(b.facing);
             const std::vector<ScreenPt> ref = polar_path(w, b, K, md, proj, [&](std::size_t i) {
                 return geo::vertex_position(K, geo::Polar<double>{c_r, c_t}, facing,
                                             geo::Polar<double>{static_cast<double>(b.local[i].r), static_cast<double>(b.local[i].theta)});
             });
-            const std::size_t count = render::body_screen_points(w, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+            const std::size_t count =
+                render::body_screen_points(w, b, s.shapes[bi], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
             // The polar path in T, as the renderer drew before: walk_end vertices, edge_projected.
             std::size_t pc = 0;
             bool open = false;
@@ -391,7 +393,7 @@ PathErr body_path_error(const char* scene_name, double K0, geo::Projection proj)
     return out;
 }
 
-// World::shape's cache, refreshed when K changes, holds what the direct computation gives, bit
+// render::ShapeCache, refreshed when K changes, holds what the direct computation gives, bit
 // for bit: to_vec of each local vertex, and for each edge the weights of the direct form
 // (t Sf(K (t d)^2) / Sf(K d^2), u likewise) or of the recurrence, with d = geo::distance of the
 // local end points.
@@ -402,9 +404,12 @@ void shape_is_direct(const char* scene_name, double K0) {
     scene.curvature = K0;
     scene.curvature_rate = 0.3;
     world::World<T> w(scene);
+    std::vector<render::ShapeCache<T>> caches;
+    render::make_shape_caches(w, caches);
     for (int frame = 0; frame < 4; ++frame) {
-        for (const auto& b : w.bodies) {
-            const world::ShapeCache<T>& c = w.shape(b);
+        for (std::size_t bi = 0; bi < w.bodies.size(); ++bi) {
+            const auto& b = w.bodies[bi];
+            const render::ShapeCache<T>& c = caches[bi].refresh(w.K, b);
             ASSERT_TRUE(c.valid);
             ASSERT_EQ(c.K, w.K);
             const std::size_t n = b.local.size(), edges = c.antipodal.size();
@@ -435,7 +440,7 @@ void shape_is_direct(const char* scene_name, double K0) {
             }
             ASSERT_EQ(c.any_antipodal, any) << scene_name;
         }
-        w.press(world::Action::curvature_up);  // K changes: the next shape() refreshes
+        w.press(world::Action::curvature_up);  // K changes: the next refresh recomputes
         w.step(T(0.1));
     }
 }
@@ -650,9 +655,11 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
         for (int frame = 0; frame < 12; ++frame) {
             w.step(fixed(0.1));
             const auto m = render::ScreenMap<fixed>::of(800, 480, w.R);
-            for (const auto& b : w.bodies) {
-                const std::size_t count = render::body_screen_points(w, b, m, o, s.vertices.data(), s.vectors.data(), s.points.data());
-                const world::ShapeCache<fixed>& sh = w.shape(b);
+            for (std::size_t bi = 0; bi < w.bodies.size(); ++bi) {
+                const auto& b = w.bodies[bi];
+                const std::size_t count =
+                    render::body_screen_points(w, b, s.shapes[bi], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+                const render::ShapeCache<fixed>& sh = s.shapes[bi];
                 const geo::Motion<fixed> M = geo::body_motion(w.K, b.centre, b.facing);
                 const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
                 for (std::size_t i = 0; i < n; ++i) {
