@@ -94,7 +94,7 @@ inline Cursor cursor_at(const SubPoint* out, const SubPoint* at) {
 [[gnu::noinline]] inline SubPoint* general_slerp_point(fx::fixed K, const ScreenMap<fx::fixed>& m, fx::fixed a, fx::fixed b,
                                                        const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
                                                        SubPoint* out, SubPoint* at) {
-    return general_point(K, m, {dot2(a, P.w, b, Q.w), dot2(a, P.x, b, Q.x), dot2(a, P.y, b, Q.y)}, out, at);
+    return general_point(K, m, geo::slerp_point(a, P, b, Q), out, at);
 }
 // An edge whose ends are antipodal on the sphere: walked from its polar end points.
 [[gnu::noinline]] inline SubPoint* antipodal_points(fx::fixed K, const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>& P,
