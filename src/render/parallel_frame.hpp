@@ -227,15 +227,15 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
         while (i < nb && home[i] != t);
         return i;
     };
-    // The body two ahead is fetched while this one is done: each core's hardware prefetchers,
-    // following its bodies' addresses, would otherwise take lines of the other core's bodies
-    // between them.
+    // The body two ahead is fetched while this one is done: World::step has just written every
+    // body on the calling thread's core, and a thread's bodies are not contiguous, so the
+    // hardware prefetchers do not see them coming.
     constexpr int kAhead = 2;
     int ahead = -1;
     for (int k = 0; k <= kAhead; ++k) ahead = next_body(ahead);
     for (int i = next_body(-1); i < nb; i = next_body(i)) {
         if (ahead < nb) {
-            WorkerPool::prefetch_for_write(&world.bodies[static_cast<std::size_t>(ahead)]);
+            __builtin_prefetch(&world.bodies[static_cast<std::size_t>(ahead)]);
             ahead = next_body(ahead);
         }
         const std::size_t idx = static_cast<std::size_t>(i);

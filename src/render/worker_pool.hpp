@@ -38,20 +38,6 @@ public:
     // thread waited for may need this core).
     static void pause();
 
-    // Asks for the cache line at p, which this thread will soon write, so that it is here and
-    // writable by then. On x86 this is PREFETCHW: GCC emits it for __builtin_prefetch(p, 1)
-    // only when told the target has it (-mprfchw), which the portable build does not say,
-    // and gives PREFETCHT0, which fetches the line to be read: the write then still waits for
-    // the other core to give up its copy. Every x86-64 core runs PREFETCHW (older Intel cores
-    // as a no-op). Elsewhere __builtin_prefetch(p, 1) (aarch64: PRFM PSTL1KEEP).
-    static void prefetch_for_write(const void* p) {
-#if defined(__x86_64__) || defined(__i386__)
-        asm volatile("prefetchw %0" : : "m"(*static_cast<const char*>(p)));
-#else
-        __builtin_prefetch(p, 1);
-#endif
-    }
-
 private:
     // Calls call(context, i) on every worker i and call(context, 0) here, then waits for them.
     void run_on_all(void (*call)(void*, int), void* context);
