@@ -1,7 +1,7 @@
 // The paper's triangle solutions in polar coordinates, in forms that are exact for every
-// curvature K, including 0, and never divide by zero (docs/design.md, "Where the
-// paper's formulas break"). Written once, templated on the scalar: double (the reference engine), float, and
-// fx::fixed (the device engine).
+// curvature K, including 0, and never divide by zero (docs/design.md, "Where the paper's
+// formulas break"). Written once, templated on the scalar: double (the reference engine),
+// float, and fx::fixed (the device engine).
 //
 // Conventions
 // - A position is polar (r, theta) about the screen centre O. theta runs counter-clockwise from
@@ -18,13 +18,15 @@
 //   so alpha = delta - pi.
 // - Lengths are in world units; at K = +1 the whole sphere is r <= pi.
 //
-// The 3-vector model (docs/design.md): a point is p = (C_K(r), S_K(r) cos theta, S_K(r) sin theta)
-// with <p, q> = w1 w2 + K (x1 x2 + y1 y2) = C_K(dist). Every solution below is the polar
-// reading of a small piece of that model, written without 1/sqrt|K| and without acos.
+// The 3-vector model (docs/design.md): a point is p = (C_K(r), S_K(r) cos theta,
+// S_K(r) sin theta) with <p, q> = w1 w2 + K (x1 x2 + y1 y2) = C_K(dist). Every solution is the
+// polar reading of a small piece of that model, written without 1/sqrt|K| and without acos.
 //
 // The parts:
-//   geometry/scalar.hpp      what the geometry needs of a scalar (double, float; fixed brings its own)
-//   geometry/model.hpp       points and 3-vectors, S_K, C_K and their inverses, distance, slerp_point
+//   geometry/scalar.hpp      what the geometry needs of a double or float scalar (fixed point
+//                            brings its own: fixed/math.hpp)
+//   geometry/model.hpp       points and 3-vectors, S_K, C_K, their inverses, distance,
+//                            slerp_point
 //   geometry/walk.hpp        geodesic walks (walk, walk_end, bearing), a vertex's position, moving
 //   geometry/motion.hpp      a rigid body's motion as a matrix (body_motion, MotionApply)
 //   geometry/projection.hpp  the projections (project, project_polar, project_vec)

@@ -1,10 +1,10 @@
 // Where a kiosk frame goes, stage by stage, side by side in one run (Google Benchmark):
-//     build/p8-release/bench_breakdown
+//     build/release/bench_breakdown
 // For 800x480 RGB565 (the Pi's display) and 1920x1080 XRGB8888, fixed and double engines:
 //   step       the physics (World::step)
 //   backdrop   background and shaded outside of the limit circle, as spans (draw_backdrop)
-//   backdrop_pixelwise  the same pixels the way it was done before: Canvas::clear then
-//              shade_outside_circle, pixel by pixel (for comparison)
+//   backdrop_pixelwise  the same pixels by Canvas::clear then shade_outside_circle, pixel
+//              by pixel (for comparison)
 //   geometry   every body's vertices, tessellated edges, projection, screen points
 //   raster     the bodies' lines from those points (computed once before timing)
 //   copy       render::copy_canvas, back buffer to a second ("framebuffer") buffer

@@ -1,6 +1,6 @@
 // Geometry cost of the same scenes through the fixed, float and double engines, side by side
 // in one run (Google Benchmark), per vertex and per tessellated point:
-//     build/p8-release/bench_geometry
+//     build/release/bench_geometry
 //
 //   vertices/<engine>/<scene>  every body's vertices from its centre and facing, in polar
 //                              (walk_end, what `dump` exports): ns per vertex (counter ns_per_item)

@@ -1,5 +1,5 @@
 // The threaded frame against one thread, side by side in one run (Google Benchmark):
-//     build/p8-release/bench_parallel
+//     build/release/bench_parallel
 // World::step + draw_world on one thread (DrawScratch) against World::step + draw_world over a
 // WorkerPool of 1, 2 and 4 threads (started once, before timing: the bodies' geometry and the
 // raster bands on the pool), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk,

@@ -17,7 +17,7 @@ if(NONEUCLID_HAVE_BENCHMARK)
     endif()
 endif()
 
-# One thread against two, interleaved in one process (README "Threads"): a plain program.
+# One thread against two, interleaved in one process (docs/performance.md): a plain program.
 add_executable(parallel_ab bench/parallel_ab.cpp)
 target_link_libraries(parallel_ab PRIVATE noneuclid_render noneuclid_warnings Threads::Threads)
 
