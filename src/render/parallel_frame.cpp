@@ -59,32 +59,40 @@ void start_frame(ParallelScratchBase& s, int height, int threads, LineStyle line
     f.margin = row_margin(line);
 }
 
+namespace {
+// The lists' merge: of the threads' next entries for band t, the one with the least body
+// index (the world's order), taken from its list; nullptr once every list is closed. Waits
+// (yielding) for an entry its thread has not written yet, adding the time to `waited`.
+const BandEntry* next_in_world_order(const BandEntry** head, const FrameBands& f,
+                                     std::chrono::steady_clock::duration& waited) {
+    using clock = std::chrono::steady_clock;
+    int first = -1;  // the thread whose next entry has the least idx
+    uint32_t least = BandEntry::kEnd;
+    for (int u = 0; u < f.threads; ++u) {
+        const BandEntry& e = *head[u];
+        if (e.ready.load(std::memory_order_acquire) != f.generation) {
+            const clock::time_point w0 = clock::now();
+            while (e.ready.load(std::memory_order_acquire) != f.generation) WorkerPool::pause();
+            waited += clock::now() - w0;
+        }
+        if (e.idx < least) least = e.idx, first = u;
+    }
+    return first < 0 ? nullptr : head[first]++;
+}
+}  // namespace
+
 std::chrono::steady_clock::duration raster_band(const BandRaster& r, const ParallelScratchBase& s, const FrameBands& f,
                                                 int t) {
-    using clock = std::chrono::steady_clock;
-    clock::duration waited{0};
+    std::chrono::steady_clock::duration waited{0};
     const int y0 = f.row[t], y1 = f.row[t + 1];
     if (r.backdrop) draw_backdrop_rows(r.canvas, r.circle, r.options, y0, y1);
     const BandEntry* head[kMaxBandThreads];  // each thread's next entry for this band
     for (int u = 0; u < f.threads; ++u) head[u] = s.list(u, t, f.threads);
-    for (;;) {
-        int first = -1;  // the thread whose next entry has the least idx
-        uint32_t least = BandEntry::kEnd;
-        for (int u = 0; u < f.threads; ++u) {
-            const BandEntry& e = *head[u];
-            if (e.ready.load(std::memory_order_acquire) != f.generation) {
-                const clock::time_point w0 = clock::now();
-                while (e.ready.load(std::memory_order_acquire) != f.generation) WorkerPool::pause();
-                waited += clock::now() - w0;
-            }
-            if (e.idx < least) least = e.idx, first = u;
-        }
-        if (first < 0) break;  // every list closed
-        const BandEntry& e = *head[first]++;
+    while (const BandEntry* e = next_in_world_order(head, f, waited)) {
         // A body wholly inside the band (its margin too) writes only there: drawn as on one
         // thread, without the band's per-segment checks.
-        const bool inside = e.top - f.margin >= int64_t{y0} * kSub && e.bottom + f.margin < int64_t{y1} * kSub;
-        draw_screen_points(r.canvas, e.points, e.count, e.color, r.line, inside ? RowRange{} : RowRange{y0, y1});
+        const bool inside = e->top - f.margin >= int64_t{y0} * kSub && e->bottom + f.margin < int64_t{y1} * kSub;
+        draw_screen_points(r.canvas, e->points, e->count, e->color, r.line, inside ? RowRange{} : RowRange{y0, y1});
     }
     return waited;
 }
