@@ -5,7 +5,8 @@
 
 #include "app/recorder.hpp"
 #include "render/hud.hpp"
-#include "render/parallel.hpp"
+#include "render/parallel_frame.hpp"
+#include "render/worker_pool.hpp"
 
 namespace noneuclid::app {
 namespace {

@@ -1,20 +1,21 @@
 // Accuracy of the fixed-point functions against the std:: double functions.
 //
 // One piece of code measures, and both `noneuclid accuracy` (which prints the table) and
-// tests/accuracy call it: what the README reports is what the tests measure. The bounds the
-// tests assert are written in tests/accuracy/test_accuracy.cpp, not here: abs_bound and
+// tests/accuracy call it: what docs/accuracy.md reports is what the tests measure. The bounds
+// the tests assert are written in tests/accuracy/test_accuracy.cpp, not here: abs_bound and
 // rel_bound below are the report's own (its "ok" column and exit code), so that the test does
 // not trust the code it checks.
 //
 // Method. Each row sweeps one function over a documented domain: `dense` evenly spaced points
 // (plus as many log-spaced points for domains spanning several decades) and `random` seeded
 // uniform points (rows whose domain is marked ~ add as many log-spaced points, so that every
-// decade and the steep ends near domain limits are covered). Every sample is first rounded to the function's input type (Q16.16 or
-// binary angle), so the error measured is that of the function on the exact input it was
-// given; the std:: reference is evaluated in double on that same input. Rows with a rel_floor
-// use a mixed measure, each sample counted once: relative error where |reference| >= floor,
-// absolute error below it (where the Q16.16 output step, 1.5e-5, decides more than any
-// function could). Rows without a floor measure absolute error everywhere.
+// decade and the steep ends near domain limits are covered). Every sample is first rounded to
+// the function's input type (Q16.16 or binary angle), so the error measured is that of the
+// function on the exact input it was given; the std:: reference is evaluated in double on that
+// same input. Rows with a rel_floor use a mixed measure, each sample counted once: relative
+// error where |reference| >= floor, absolute error below it (where the Q16.16 output step,
+// 1.5e-5, decides more than any function could). Rows without a floor measure absolute error
+// everywhere.
 #pragma once
 
 #include <cstdint>

@@ -4,7 +4,7 @@
 // the top bits index the sine table directly. Resolution 2^-32 turn = 1.46e-9 rad. Read as a
 // signed number the same bits are the angle in [-pi, pi); to_radians() uses that reading.
 //
-// Angles in noneuclid run counter-clockwise from east as seen on screen (design.md).
+// Angles in noneuclid run counter-clockwise from east as seen on screen (docs/design.md).
 #pragma once
 
 #include <cstdint>

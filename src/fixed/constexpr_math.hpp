@@ -108,7 +108,8 @@ constexpr double asinh(double x) {
     return log(x + sqrt(x * x + 1));
 }
 
-// The curvature functions of design.md as power series in u (exact for |u| <= 40 in double):
+// The curvature functions of docs/design.md as power series in u (exact for |u| <= 40 in
+// double):
 //   Sf(u) = sum (-u)^n / (2n+1)!   Cf(u) = sum (-u)^n / (2n)!
 constexpr double Sf(double u) {
     double term = 1, sum = 1;

@@ -3,7 +3,7 @@
 #include "fixed/tables.hpp"
 
 #include "fixed/constexpr_math.hpp"
-#include "fixed/math.hpp"
+#include "fixed/division.hpp"
 
 namespace noneuclid::fx::tables {
 namespace {

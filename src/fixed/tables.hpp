@@ -42,7 +42,7 @@ extern const std::array<uint32_t, 256> exp2_q30;
 inline constexpr int kLog2Bits = 9;
 extern const std::array<uint32_t, (1 << kLog2Bits) + 2> log2_q31;
 
-// The curvature functions of design.md on the range the geometry uses most, |u| <= 10
+// The curvature functions of docs/design.md on the range the geometry uses most, |u| <= 10
 // (covers K r^2 for |K| <= 1 and r <= pi):
 //   Sf(u), u = -10 + i/64,  i in [0, 1280] (+1 pad), Q3.28. Error <= 1.0e-6.
 //   Cf(u), u = -10 + i/128, i in [0, 2560] (+1 pad), Q4.27. Error <= 1.6e-6.

@@ -1,5 +1,5 @@
-// The reference model: the 3-vector model of design.md as 3x3 matrices (GLM, double), built
-// from std:: functions with the textbook branch for each sign of K. Independent of
+// The reference model: the 3-vector model of docs/design.md as 3x3 matrices (GLM, double),
+// built from std:: functions with the textbook branch for each sign of K. Independent of
 // geometry.hpp (no Sf/Cf series, no haversine, no slerp): it is what the tests and the
 // accuracy report measure the engines against.
 //

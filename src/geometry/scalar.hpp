@@ -18,8 +18,9 @@ template <class T>
 constexpr T pi_v = T(3.14159265358979323846);
 
 namespace detail {
-// The curvature functions of design.md in floating point. Series near u = 0, where the closed
-// forms would divide 0 by 0; the series are truncated where the next term is below 1e-17.
+// The curvature functions of docs/design.md in floating point. Series near u = 0, where the
+// closed forms would divide 0 by 0; the series are truncated where the next term is below
+// 1e-17.
 template <class T>
 T Sf(T u) {
     using std::fabs, std::sin, std::sinh, std::sqrt;

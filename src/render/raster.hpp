@@ -29,6 +29,7 @@
 #pragma once
 
 #include <climits>
+#include <cmath>
 #include <cstdint>
 
 #include "render/canvas.hpp"
@@ -86,5 +87,19 @@ void visit_polyline(int width, int height, const SubPoint* points, int n, bool c
 // shaded area outside the limit circle in the paper's figures). With `blend_alpha` < 255 the
 // shade is blended instead.
 void shade_outside_circle(const Canvas& c, double cx, double cy, double r, Rgb shade, int blend_alpha = 255);
+
+// The columns [first, last] of row y whose pixel centres lie inside the circle (cx, cy, r), in
+// px, on a canvas `width` px wide; last < first when there are none. The columns may reach one
+// past the canvas on either side.
+struct ColumnSpan {
+    int first, last;
+};
+inline ColumnSpan columns_inside_circle(double cx, double cy, double r, int y, int width) {
+    const double dy = y + 0.5 - cy;
+    if (!(std::fabs(dy) < r)) return {0, -1};
+    const double half = std::sqrt(r * r - dy * dy);
+    return {static_cast<int>(std::fmax(-1.0, std::floor(cx - half - 0.5) + 1)),
+            static_cast<int>(std::fmin(width, std::ceil(cx + half - 0.5) - 1))};
+}
 
 }  // namespace noneuclid::render

@@ -59,27 +59,6 @@ inline bool parse_action(const std::string& s, Action& out) {
     return false;
 }
 
-// What drawing a rigid body needs that changes only with K (World::shape): each vertex as its
-// local 3-vector about the centre, each edge's slerp weights (a rigid motion keeps the edge's
-// length, so they come from the local polar vertices). Sized when the body is made; refreshed
-// in place, without allocating, when K differs from the K they were made at.
-template <class T>
-struct ShapeCache {
-    T K{};
-    bool valid = false;
-    std::vector<geo::Vec3<T>> local;  // per vertex
-    std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
-    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k): weights_of(e)
-    std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
-    // Set once, whatever K: each vertex's (cos phi, sin phi), each edge's sine_of_half(phi1 - phi2).
-    std::vector<T> cos_phi, sin_phi;
-    std::vector<geo::HalfSine<T>> half_sine;
-    std::size_t per_edge = 0;  // 2 (level - 1): the weights of one edge
-    bool any_antipodal = false;  // whether any edge is antipodal
-    T* weights_of(std::size_t e) { return weights.data() + e * per_edge; }
-    const T* weights_of(std::size_t e) const { return weights.data() + e * per_edge; }
-};
-
 template <class T>
 struct alignas(64) Body {
     Polar<T> centre;
@@ -87,9 +66,6 @@ struct alignas(64) Body {
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
     int64_t step_carry = 0;       // what speed * dt rounding left over (fixed point)
     const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
-    // World::shape's cache. Mutable: a const world refreshes it when drawn after K changed. One
-    // body is drawn by one thread at a time (draw_world's threaded overload hands out bodies).
-    mutable ShapeCache<T> shape;
 };
 
 // The engine's geometry: the exact forms, or the paper's (double only).
@@ -166,17 +142,6 @@ public:
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 
     void step(T dt) {
-        begin_step(dt);
-        for (Body<T>& b : bodies) step_body(b, dt);
-        end_step(dt);
-    }
-
-    // step(dt) in three parts, for a caller that spreads the bodies over threads (render::
-    // step_and_draw): begin_step (the curvature, the held keys' thrust and turn), then
-    // step_body for every body, in any order, on any thread (a body's step reads K, R, the held
-    // keys and the body, and writes only the body), then end_step (the clock). The same bits
-    // as step(dt).
-    void begin_step(T dt) {
         const int dk = held(Action::curvature_up) - held(Action::curvature_down);
         if (dk != 0) K = clamp_k(K + T(scene_.curvature_rate) * dt * T(dk));
         if (scene_.sweep_rate != 0) {
@@ -184,37 +149,9 @@ public:
             if (K >= T(1)) K = T(1), sweep_dir_ = -1;
             if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
         }
-        thrust_ = T(scene_.thrust);
-        turn_ = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
-        thrusting_ = held(Action::thrust);
-    }
-    void step_body(Body<T>& b, T dt) const {
-        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
-        using std::atan2, std::cos, std::sin;
-        T a = b.accel, adir = b.accel_dir;
-        if (b.desc->controlled && thrusting_) a = thrust_, adir = b.facing;
-        if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
-            const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
-            const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
-            b.speed = hypot(vx, vy);
-            if (b.speed != T(0)) b.travel = atan2(vy, vx);
-        }
-        if (b.speed != T(0)) {
-            const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
-            const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
-            b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
-            b.centre = p.centre;
-            b.travel = p.travel;
-            b.facing = p.facing;
-        }
-        const T spin = b.desc->controlled ? b.spin + turn_ : b.spin;
-        if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
-        if (b.centre.r > R) {  // the limit circle
-            const T r = T(2) * R - b.centre.r;
-            b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
-        }
-    }
-    void end_step(T dt) {
+        const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
+        const Steering steer{T(scene_.thrust), turn, held(Action::thrust)};
+        for (Body<T>& b : bodies) step_body(b, dt, steer);
         time += static_cast<double>(dt);
         ++frame;
     }
@@ -242,31 +179,40 @@ public:
         for (std::size_t i = 0; i < b.local.size(); ++i) out[i] = engine::vertex(K, b.centre, b.facing, b.local[i]);
     }
 
-    // The body's shape at the current K (ShapeCache), refreshed first if K changed since.
-    const ShapeCache<T>& shape(const Body<T>& b) const {
-        ShapeCache<T>& c = b.shape;
-        if (c.valid && c.K == K) return c;
-        const std::size_t n = b.local.size(), edges = c.antipodal.size();
-        const int level = b.desc->tessellation;
-        for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
-            const T rho = b.local[i].r, s = geo::S_K(K, rho);
-            c.local[i] = {geo::C_K(K, rho), s * c.cos_phi[i], s * c.sin_phi[i]};
-            c.root[i] = geo::clamped_root(s);
-        }
-        c.any_antipodal = false;
-        for (std::size_t e = 0; e < edges; ++e) {
-            const std::size_t f = (e + 1) % n;
-            // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
-            const T d = geo::distance_from(K, b.local[e].r, b.local[f].r, c.root[e], c.root[f], c.half_sine[e]);
-            c.antipodal[e] = !geo::slerp_weights(K, d, level, c.weights_of(e));
-            c.any_antipodal = c.any_antipodal || c.antipodal[e];
-        }
-        c.K = K, c.valid = true;
-        return c;
-    }
-
 private:
     static constexpr double kDegree = 3.14159265358979323846 / 180;
+    // What the held keys do to the controlled body this step: thrust along its facing, turn.
+    struct Steering {
+        T thrust{}, turn{};
+        bool thrusting = false;
+    };
+    // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
+    void step_body(Body<T>& b, T dt, const Steering& steer) const {
+        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
+        using std::atan2, std::cos, std::sin;
+        T a = b.accel, adir = b.accel_dir;
+        if (b.desc->controlled && steer.thrusting) a = steer.thrust, adir = b.facing;
+        if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
+            const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
+            const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
+            b.speed = hypot(vx, vy);
+            if (b.speed != T(0)) b.travel = atan2(vy, vx);
+        }
+        if (b.speed != T(0)) {
+            const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
+            const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
+            b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
+            b.centre = p.centre;
+            b.travel = p.travel;
+            b.facing = p.facing;
+        }
+        const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
+        if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
+        if (b.centre.r > R) {  // the limit circle
+            const T r = T(2) * R - b.centre.r;
+            b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
+        }
+    }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {
         Body<T> b;
@@ -278,20 +224,6 @@ private:
         b.accel_dir = geo::wrap_pi(T(sb.accel_direction_deg * kDegree));
         b.spin = T(sb.spin_deg * kDegree);
         for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
-        const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (sb.closed ? n : n - 1);
-        b.shape.local.resize(n);
-        b.shape.root.resize(n);
-        b.shape.antipodal.resize(edges);
-        for (const Polar<T>& v : b.local) {
-            using std::cos, std::sin;
-            b.shape.cos_phi.push_back(cos(v.theta));
-            b.shape.sin_phi.push_back(sin(v.theta));
-        }
-        using geo::sine_of_half;  // and fx::sine_of_half by ADL
-        for (std::size_t e = 0; e < edges; ++e)
-            b.shape.half_sine.push_back(sine_of_half(b.local[e].theta - b.local[(e + 1) % n].theta));
-        b.shape.per_edge = static_cast<std::size_t>(sb.tessellation > 1 ? 2 * (sb.tessellation - 1) : 0);
-        b.shape.weights.resize(edges * b.shape.per_edge);
         return b;
     }
     void copy_from(const World& o) {
@@ -309,8 +241,6 @@ private:
     T initial_K_{};
     int sweep_dir_ = 1;
     bool held_[kActionCount] = {};
-    T thrust_{}, turn_{};  // this step's, set by begin_step
-    bool thrusting_ = false;
 };
 
 }  // namespace noneuclid::world

@@ -1,10 +1,10 @@
 // Where a kiosk frame goes, stage by stage, side by side in one run (Google Benchmark):
-//     build/p8-release/bench_breakdown
+//     build/release/bench_breakdown
 // For 800x480 RGB565 (the Pi's display) and 1920x1080 XRGB8888, fixed and double engines:
 //   step       the physics (World::step)
 //   backdrop   background and shaded outside of the limit circle, as spans (draw_backdrop)
-//   backdrop_pixelwise  the same pixels the way it was done before: Canvas::clear then
-//              shade_outside_circle, pixel by pixel (for comparison)
+//   backdrop_pixelwise  the same pixels by Canvas::clear then shade_outside_circle, pixel
+//              by pixel (for comparison)
 //   geometry   every body's vertices, tessellated edges, projection, screen points
 //   raster     the bodies' lines from those points (computed once before timing)
 //   copy       render::copy_canvas, back buffer to a second ("framebuffer") buffer
@@ -55,9 +55,11 @@ struct Setup {
         scratch.prepare(wd);
         for (int i = 0; i < 30; ++i) wd.step(T(1.0 / 60));
         render::draw_world(c, wd, o, scratch);
-        for (const auto& b : wd.bodies) {
+        for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
+            const auto& b = wd.bodies[i];
             std::vector<render::SubPoint> p(render::body_point_capacity(b));
-            const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
+            const std::size_t k =
+                render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
             pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
             counts.push_back(k);
         }
@@ -77,7 +79,9 @@ void stage(benchmark::State& st, const std::string& which, int w, int h, render:
                                          static_cast<double>(s.m.scale) * static_cast<double>(s.wd.R), s.o.outside);
         } else if (which == "geometry") {
             std::size_t k = 0;
-            for (const auto& b : s.wd.bodies) k += render::body_screen_points(s.wd, b, s.m, s.o, s.scratch.vertices.data(), s.scratch.vectors.data(), s.scratch.points.data());
+            for (std::size_t i = 0; i < s.wd.bodies.size(); ++i)
+                k += render::body_screen_points(s.wd, s.wd.bodies[i], s.scratch.shapes[i], s.m, s.o, s.scratch.vertices.data(),
+                                                s.scratch.vectors.data(), s.scratch.points.data());
             benchmark::DoNotOptimize(k);
         } else if (which == "raster") {
             std::size_t at = 0;

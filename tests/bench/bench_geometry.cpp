@@ -1,6 +1,6 @@
 // Geometry cost of the same scenes through the fixed, float and double engines, side by side
 // in one run (Google Benchmark), per vertex and per tessellated point:
-//     build/p8-release/bench_geometry
+//     build/release/bench_geometry
 //
 //   vertices/<engine>/<scene>  every body's vertices from its centre and facing, in polar
 //                              (walk_end, what `dump` exports): ns per vertex (counter ns_per_item)
@@ -66,17 +66,28 @@ void vertices(benchmark::State& st, const char* scene) {
     record<T>(st, "vertices", n);
 }
 
-// The draw's vertices: the body's motion, applied to its cached local 3-vectors (World::shape)
-// as body_screen_points applies it (geo::MotionApply).
+// The bodies' shape caches, made and refreshed for the world's K.
+template <class T>
+std::vector<render::ShapeCache<T>> shapes_of(const world::World<T>& w) {
+    std::vector<render::ShapeCache<T>> caches;
+    render::make_shape_caches(w, caches);
+    for (std::size_t i = 0; i < caches.size(); ++i) caches[i].refresh(w.K, w.bodies[i]);
+    return caches;
+}
+
+// The draw's vertices: the body's motion, applied to its cached local 3-vectors
+// (render::ShapeCache) as body_screen_points applies it (geo::MotionApply).
 template <class T>
 void vectors(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
+    std::vector<render::ShapeCache<T>> shapes = shapes_of(w);
     std::vector<geo::Vec3<T>> buf(4096);
     double n = 0;
     for (const auto& b : w.bodies) n += static_cast<double>(b.local.size());
     for (auto _ : st) {
-        for (const auto& b : w.bodies) {
-            const world::ShapeCache<T>& sh = w.shape(b);
+        for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+            const auto& b = w.bodies[i];
+            const render::ShapeCache<T>& sh = shapes[i].refresh(w.K, b);
             const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
             const geo::MotionApply<T> apply(m);
             apply(sh.local.data(), buf.data(), b.local.size());
@@ -103,6 +114,7 @@ void motion(benchmark::State& st, const char* scene) {
 template <class T>
 void apply(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
+    const std::vector<render::ShapeCache<T>> shapes = shapes_of(w);
     std::vector<geo::Motion<T>> ms;
     for (const auto& b : w.bodies) ms.push_back(geo::body_motion(w.K, b.centre, b.facing));
     std::vector<geo::Vec3<T>> buf(4096);
@@ -111,7 +123,7 @@ void apply(benchmark::State& st, const char* scene) {
     for (auto _ : st) {
         for (std::size_t i = 0; i < w.bodies.size(); ++i) {
             const geo::MotionApply<T> a(ms[i]);
-            a(w.shape(w.bodies[i]).local.data(), buf.data(), w.bodies[i].local.size());
+            a(shapes[i].local.data(), buf.data(), w.bodies[i].local.size());
             benchmark::DoNotOptimize(buf.data());
         }
         benchmark::ClobberMemory();
@@ -158,7 +170,7 @@ void screen(benchmark::State& st, const char* scene) {
     for (auto _ : st) {
         std::size_t total = 0;
         for (std::size_t i = 0; i < w.bodies.size(); ++i)
-            total += render::body_screen_points(w, w.bodies[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
+            total += render::body_screen_points(w, w.bodies[i], s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
         benchmark::DoNotOptimize(s.points.data());
         benchmark::ClobberMemory();
         n = static_cast<double>(total);

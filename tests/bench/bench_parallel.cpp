@@ -1,7 +1,7 @@
 // The threaded frame against one thread, side by side in one run (Google Benchmark):
-//     build/p8-release/bench_parallel
-// World::step + draw_world on one thread (DrawScratch) against step_and_draw over a WorkerPool of
-// 1, 2 and 4 threads (started once, before timing: the bodies' steps, their geometry and the
+//     build/release/bench_parallel
+// World::step + draw_world on one thread (DrawScratch) against World::step + draw_world over a
+// WorkerPool of 1, 2 and 4 threads (started once, before timing: the bodies' geometry and the
 // raster bands on the pool), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk,
 // at 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double engines. The world and the pixels
 // are the same in every case, bit for bit (tests/perf/test_parallel).
@@ -14,13 +14,13 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 #include "fastest.hpp"
 
 namespace {
@@ -39,17 +39,17 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
     render::WorkerPool pool(threads > 0 ? threads : 1);
     render::ParallelScratch<T> par;
     par.prepare(wd, pool);
-    if (const char* e = std::getenv("BAND_ROWS")) par.band_rows = std::atoi(e);  // rows per band; unset: one band per thread (home mode)
     std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
     const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::DrawOptions o;
     const T dt(1.0 / 60);
     const std::clock_t c0 = std::clock();
     for (auto _ : st) {
+        wd.step(dt);
         if (threads == 0)
-            wd.step(dt), render::draw_world(c, wd, o, serial);
+            render::draw_world(c, wd, o, serial);
         else
-            render::step_and_draw(c, wd, dt, o, par, pool);
+            render::draw_world(c, wd, o, par, pool);
         benchmark::DoNotOptimize(px.data());
         benchmark::ClobberMemory();
     }

@@ -1,6 +1,6 @@
 // Frame cost over bodies s, vertices v and tessellation i (the paper's O(s v i)), side by side in
 // one run (Google Benchmark), fixed and double engines:
-//     build/p8-release/bench_scaling [--svg=scaling.svg]
+//     build/release/bench_scaling [--svg=scaling.svg]
 // The stress scene (K = -1, random bodies) with s bodies of v vertices at level i, 800x480
 // RGB565, drawn without the backdrop (a constant per frame, measured in bench_breakdown):
 //   geometry  every body's screen points (vertices, edges, projection)
@@ -47,7 +47,9 @@ void run(benchmark::State& st, Point p, bool raster) {
         if (raster)
             render::draw_world(c, wd, o, scratch, false);
         else
-            for (const auto& b : wd.bodies) benchmark::DoNotOptimize(render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), scratch.points.data()));
+            for (std::size_t i = 0; i < wd.bodies.size(); ++i)
+                benchmark::DoNotOptimize(render::body_screen_points(wd, wd.bodies[i], scratch.shapes[i], m, o, scratch.vertices.data(),
+                                                                    scratch.vectors.data(), scratch.points.data()));
         benchmark::ClobberMemory();
     }
     st.counters["points"] = static_cast<double>(p.s) * p.v * p.i;
@@ -86,18 +88,24 @@ void fit(const std::vector<std::array<double, N>>& x, const std::vector<double>&
     }
 }
 
-}  // namespace
+// One fitted engine and stage: s v i, the measured us and the fit's, per point.
+struct Series {
+    std::string name;
+    std::vector<double> x, t, f;
+};
+using Coefficients = std::map<std::string, std::array<double, 4>>;
 
-int main(int argc, char** argv) {
-    std::string svg;
-    for (int k = 1; k < argc; ++k)
-        if (std::strncmp(argv[k], "--svg=", 6) == 0) svg = argv[k] + 6;
-    benchmark::Initialize(&argc, argv);
+// The three sweeps through (s, v, i) = (100, 8, 8), and v at i = 1.
+std::vector<Point> sweep_points() {
     std::vector<Point> pts;
     for (int s : {25, 50, 100, 200, 400}) pts.push_back({s, 8, 8});
     for (int v : {4, 16, 32}) pts.push_back({100, v, 8});
     for (int i : {1, 2, 4, 16, 32}) pts.push_back({100, 8, i});
     for (int v : {4, 16, 32}) pts.push_back({100, v, 1});  // vertices alone: an edge is its end
+    return pts;
+}
+
+void register_benchmarks(const std::vector<Point>& pts) {
     for (const char* e : {"fixed", "double"})
         for (const char* stage : {"geometry", "draw"})
             for (Point p : pts) {
@@ -107,21 +115,15 @@ int main(int argc, char** argv) {
                               : benchmark::RegisterBenchmark(key(e, stage, p).c_str(), [=](benchmark::State& s) { run<double>(s, p, raster); });
                 b->Unit(benchmark::kMicrosecond);
             }
-    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
-        keep_fastest(g_us, name, r.GetAdjustedCPUTime());
-    });
-    benchmark::RunSpecifiedBenchmarks(&rep);
+}
 
+// The fit per engine and stage, printed as a table; coef receives each one's coefficients.
+std::vector<Series> print_fits(const std::vector<Point>& pts, Coefficients& coef) {
     std::printf("\nfit: us = c0 + c_b * s + c_vx * (s v) + c_pt * (s v i)   (ns per body, per vertex, per tessellated "
                 "point; a vertex is also one of its edge's i points, so one more vertex at level 1 costs c_vx + c_pt)\n\n");
     std::printf("| engine | stage | c0 us | ns per body | ns per vertex | ns per point | ns per vertex at level 1 | max |residual| |\n"
                 "|---|---|---:|---:|---:|---:|---:|---:|\n");
-    struct Series {
-        std::string name;
-        std::vector<double> x, t, f;
-    };
     std::vector<Series> series;
-    std::map<std::string, std::array<double, 4>> coef;
     for (const char* e : {"fixed", "double"})
         for (const char* stage : {"geometry", "draw"}) {
             std::vector<std::array<double, 4>> x;
@@ -148,8 +150,13 @@ int main(int argc, char** argv) {
             std::printf("| %s | %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f%% |\n", e, stage, c[0], c[1] * 1000, c[2] * 1000,
                         c[3] * 1000, (c[2] + c[3]) * 1000, worst * 100);
         }
-    // One more vertex at level 1, straight from the v sweep at i = 1 (the slope of us over s v,
-    // least squares): the same quantity as the fit's c_vx + c_pt, from those four runs alone.
+    return series;
+}
+
+// The double / fixed ratios of the fits, and one more vertex at level 1 straight from the v
+// sweep at i = 1 (the slope of us over s v, least squares): the same quantity as the fit's
+// c_vx + c_pt, from those four runs alone.
+void print_ratios(const std::vector<Point>& pts, const Coefficients& coef) {
     std::map<std::string, double> level1;
     for (const char* e : {"fixed", "double"})
         for (const char* stage : {"geometry", "draw"}) {
@@ -169,7 +176,7 @@ int main(int argc, char** argv) {
         const std::string fk = std::string("fixed ") + stage, dk = std::string("double ") + stage;
         std::printf("\n%s, double / fixed:", stage);
         if (coef.count(fk) && coef.count(dk)) {
-            const auto &cf = coef[fk], &cd = coef[dk];
+            const auto &cf = coef.at(fk), &cd = coef.at(dk);
             std::printf(" %.2f per body, %.2f per tessellated point, %.2f per vertex at level 1;", cd[1] / cf[1], cd[3] / cf[3],
                         (cd[2] + cd[3]) / (cf[2] + cf[3]));
         }
@@ -178,6 +185,10 @@ int main(int argc, char** argv) {
                         level1[dk], level1[dk] / level1[fk]);
     }
     std::printf("\n");
+}
+
+// Every point's time against the fits.
+void print_points(const std::vector<Point>& pts, const std::vector<Series>& series) {
     std::printf("\n| s | v | i | s v i |");
     for (const Series& sr : series) std::printf(" %s us (fit) |", sr.name.c_str());
     std::printf("\n|---:|---:|---:|---:|");
@@ -189,33 +200,56 @@ int main(int argc, char** argv) {
             if (k < sr.t.size()) std::printf(" %.0f (%.0f) |", sr.t[k], sr.f[k]);
         std::printf("\n");
     }
-    if (!svg.empty() && !series.empty()) {
-        FILE* out = std::fopen(svg.c_str(), "w");
-        if (!out) {
-            std::fprintf(stderr, "bench_scaling: cannot write %s\n", svg.c_str());
-            return 1;
-        }
-        double xmax = 0, tmax = 0;
-        for (const Series& sr : series)
-            for (std::size_t k = 0; k < sr.t.size(); ++k) xmax = std::fmax(xmax, sr.x[k]), tmax = std::fmax(tmax, sr.t[k]);
-        const double W = 640, H = 400, L = 60, B = 40;
-        auto X = [&](double x) { return L + (W - L - 20) * x / xmax; };
-        auto Y = [&](double t) { return H - B - (H - B - 20) * t / tmax; };
-        std::fprintf(out, "<svg xmlns='http://www.w3.org/2000/svg' width='%g' height='%g' font-family='sans-serif' font-size='11'>\n", W, H);
-        std::fprintf(out, "<rect width='100%%' height='100%%' fill='white'/>\n<line x1='%g' y1='%g' x2='%g' y2='%g' stroke='black'/>\n", L, H - B, W - 20, H - B);
-        std::fprintf(out, "<line x1='%g' y1='%g' x2='%g' y2='20' stroke='black'/>\n", L, H - B, L);
-        std::fprintf(out, "<text x='%g' y='%g' text-anchor='middle'>tessellated points s v i (max %.0f)</text>\n", (L + W) / 2, H - 10, xmax);
-        std::fprintf(out, "<text x='12' y='%g' transform='rotate(-90 12 %g)' text-anchor='middle'>us per frame (max %.0f)</text>\n", H / 2, H / 2, tmax);
-        const char* colors[] = {"#c03030", "#e08030", "#3050c0", "#30a0c0"};
-        for (std::size_t k = 0; k < series.size(); ++k) {
-            const Series& sr = series[k];
-            for (std::size_t j = 0; j < sr.t.size(); ++j)
-                std::fprintf(out, "<circle cx='%.1f' cy='%.1f' r='3' fill='%s'/>\n", X(sr.x[j]), Y(sr.t[j]), colors[k % 4]);
-            std::fprintf(out, "<text x='%g' y='%g' fill='%s'>%s</text>\n", L + 10, 30 + 14.0 * static_cast<double>(k), colors[k % 4], sr.name.c_str());
-        }
-        std::fprintf(out, "</svg>\n");
-        std::fclose(out);
-        std::printf("\nplot: %s\n", svg.c_str());
+}
+
+// The series as an SVG plot of us against s v i; false if the file cannot be written.
+bool write_svg(const std::string& svg, const std::vector<Series>& series) {
+    FILE* out = std::fopen(svg.c_str(), "w");
+    if (!out) {
+        std::fprintf(stderr, "bench_scaling: cannot write %s\n", svg.c_str());
+        return false;
     }
+    double xmax = 0, tmax = 0;
+    for (const Series& sr : series)
+        for (std::size_t k = 0; k < sr.t.size(); ++k) xmax = std::fmax(xmax, sr.x[k]), tmax = std::fmax(tmax, sr.t[k]);
+    const double W = 640, H = 400, L = 60, B = 40;
+    auto X = [&](double x) { return L + (W - L - 20) * x / xmax; };
+    auto Y = [&](double t) { return H - B - (H - B - 20) * t / tmax; };
+    std::fprintf(out, "<svg xmlns='http://www.w3.org/2000/svg' width='%g' height='%g' font-family='sans-serif' font-size='11'>\n", W, H);
+    std::fprintf(out, "<rect width='100%%' height='100%%' fill='white'/>\n<line x1='%g' y1='%g' x2='%g' y2='%g' stroke='black'/>\n", L, H - B, W - 20, H - B);
+    std::fprintf(out, "<line x1='%g' y1='%g' x2='%g' y2='20' stroke='black'/>\n", L, H - B, L);
+    std::fprintf(out, "<text x='%g' y='%g' text-anchor='middle'>tessellated points s v i (max %.0f)</text>\n", (L + W) / 2, H - 10, xmax);
+    std::fprintf(out, "<text x='12' y='%g' transform='rotate(-90 12 %g)' text-anchor='middle'>us per frame (max %.0f)</text>\n", H / 2, H / 2, tmax);
+    const char* colors[] = {"#c03030", "#e08030", "#3050c0", "#30a0c0"};
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        const Series& sr = series[k];
+        for (std::size_t j = 0; j < sr.t.size(); ++j)
+            std::fprintf(out, "<circle cx='%.1f' cy='%.1f' r='3' fill='%s'/>\n", X(sr.x[j]), Y(sr.t[j]), colors[k % 4]);
+        std::fprintf(out, "<text x='%g' y='%g' fill='%s'>%s</text>\n", L + 10, 30 + 14.0 * static_cast<double>(k), colors[k % 4], sr.name.c_str());
+    }
+    std::fprintf(out, "</svg>\n");
+    std::fclose(out);
+    std::printf("\nplot: %s\n", svg.c_str());
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string svg;
+    for (int k = 1; k < argc; ++k)
+        if (std::strncmp(argv[k], "--svg=", 6) == 0) svg = argv[k] + 6;
+    benchmark::Initialize(&argc, argv);
+    const std::vector<Point> pts = sweep_points();
+    register_benchmarks(pts);
+    FastestReporter rep([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        keep_fastest(g_us, name, r.GetAdjustedCPUTime());
+    });
+    benchmark::RunSpecifiedBenchmarks(&rep);
+    Coefficients coef;
+    const std::vector<Series> series = print_fits(pts, coef);
+    print_ratios(pts, coef);
+    print_points(pts, series);
+    if (!svg.empty() && !series.empty() && !write_svg(svg, series)) return 1;
     return 0;
 }

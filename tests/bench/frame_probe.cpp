@@ -1,5 +1,5 @@
 // Runs frames (or one stage of a frame) N times for instruction counting under qemu-user
-// (tests/bench/insncount/arm-insncount; tests/bench/arm-frame-insncount.sh does the arithmetic):
+// (tests/bench/arm-frame-insncount.sh runs the counter and does the arithmetic):
 //     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION [VERTICES]]]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
@@ -7,7 +7,7 @@
 // ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888; K sets the
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
 // K = sweep changes it every frame as attract mode does, so every body's shape cache
-// (World::shape) is rebuilt every frame: the worst case of the frame stage.
+// (render::ShapeCache) is rebuilt every frame: the worst case of the frame stage.
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
 #include <cstdio>
@@ -18,6 +18,7 @@
 
 #include "render/blit.hpp"
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 
@@ -64,9 +65,11 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     const auto m = render::ScreenMap<T>::of(c, wd.R);
     std::vector<render::SubPoint> pts;
     std::vector<std::size_t> counts;
-    for (const auto& b : wd.bodies) {
+    for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
+        const auto& b = wd.bodies[i];
         std::vector<render::SubPoint> p(render::body_point_capacity(b));
-        const std::size_t k = render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
+        const std::size_t k =
+            render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
         pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
         counts.push_back(k);
     }
@@ -76,7 +79,9 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         else if (stage == "step") wd.step(dt);
         else if (stage == "backdrop") render::draw_backdrop(c, m, wd.R, o);
         else if (stage == "geometry") {
-            for (const auto& b : wd.bodies) check += render::body_screen_points(wd, b, m, o, scratch.vertices.data(), scratch.vectors.data(), scratch.points.data());
+            for (std::size_t b = 0; b < wd.bodies.size(); ++b)
+                check += render::body_screen_points(wd, wd.bodies[b], scratch.shapes[b], m, o, scratch.vertices.data(),
+                                                    scratch.vectors.data(), scratch.points.data());
         } else if (stage == "raster") {
             std::size_t at = 0;
             for (std::size_t k = 0; k < wd.bodies.size(); ++k) {

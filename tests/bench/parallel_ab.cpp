@@ -1,31 +1,31 @@
 // The threaded frame against one thread, interleaved in one process, to take a shared host's
-// noise out of the comparison (README "Threads"):
+// noise out of the comparison (docs/performance.md):
 //     build/release/parallel_ab [frames per variant, default 3000]
 // For stress and kiosk at 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double: chunks of 50
-// frames in turn of (a) World::step + draw_world on one thread, (b) step_and_draw on a pool of 2
-// with the band edges balanced (the default), (c) the same with equal bands (balance off), and
-// (d) the host's ceiling: the same pool running two whole one-thread frames at once, each on a
-// world and canvas of its own (nothing shared), and (e) step_and_draw on a pool of 1 (the
-// threaded frame's code on one thread, one band), each variant on its own copies. A burst of
-// noise from the host lands on all five alike. Prints each variant's median and 10th percentile
-// frame in us, the speedups of the medians, the ceiling (2 x (a) / (d): what two cores give
-// this frame's work with no sharing at all, at the time of the run) and where the balance left
-// the edge between the two bands; then a second table: the phases of (e) and of (b)'s two
-// threads (ParallelScratch::busy: geometry with the steps, raster with the backdrop, waits
-// for the other thread's bodies), medians over the frames.
+// frames in turn of (a) World::step + draw_world on one thread, (b) World::step + draw_world on
+// a pool of 2 with the band edges balanced (the default), (c) the same with equal bands (balance
+// off), (d) the host's ceiling: the same pool running two whole one-thread frames at once, each
+// on a world and canvas of its own (nothing shared), and (e) World::step + draw_world on a pool
+// of 1 (the threaded frame's code on one thread, one band), each variant on its own copies. A
+// burst of noise from the host lands on all five alike. Prints each variant's median and 10th
+// percentile frame in us, the speedups of the medians, the ceiling (2 x (a) / (d): what two
+// cores give this frame's work with no sharing at all, at the time of the run) and where the
+// balance left the edge between the two bands; then a second table: the phases of (e) and of
+// (b)'s two threads (ParallelScratch::busy: geometry, raster with the backdrop, waits for the
+// other thread's bodies), medians over the frames.
 //
-// The ceiling is there because this VM's second core is not always a whole core: within
-// minutes, the same two independent frames took 250 us each (ceiling 1.99) and 366 us each
-// (1.36) while one frame alone stayed at 250 us.
+// The ceiling is there because a virtual machine's second core is not always a whole core:
+// two independent frames at once can each take much longer than one frame alone, and how much
+// changes within minutes.
 //
 // The last column is the cores' round trip: the pool's two threads hand one cache line back and
 // forth (an atomic counter each increments in turn) and the time per round trip is taken, once
 // between each round of chunks; its median. It is what one line written by one core and then
-// read by the other costs at the time of the run, and on this host it moves between ~100 and
-// ~700 ns within minutes. The threaded frame shares lines between the cores (each band reads
-// the bodies that cross it from the other core; the bodies of both threads lie side by side in
-// one world), the ceiling's two frames do not: with a slow round trip the geometry phase costs
-// more on two threads and the speedup drops while the ceiling stays (README "Threads").
+// read by the other costs at the time of the run, which on a shared host changes several-fold
+// within minutes. The threaded frame shares lines between the cores (each band reads the
+// bodies that cross it from the other core; the bodies of both threads lie side by side in one
+// world), the ceiling's two frames do not: with a slow round trip the geometry phase costs more
+// on two threads and the speedup drops while the ceiling stays.
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 
@@ -81,9 +82,9 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
     render::WorkerPool pool(2);
     {
         // Each of the two frames' scratch is allocated by the thread that uses it (glibc gives
-        // each thread its own heap). Allocated one after the other by one thread, the first
-        // scratch's 3-vectors and the second's points shared a cache line, which both cores
-        // wrote for every body: the ceiling came out at 1.67-1.76 where it is 1.92-1.99.
+        // each thread its own heap): allocated one after the other by one thread, the first
+        // scratch's 3-vectors and the second's points could share a cache line, which both
+        // cores would write for every body, and the ceiling would come out low.
         world::World<T>* const own[2] = {&w3, &w4};
         auto prepare_own = [&](int t) { alone[t].prepare(*own[t]); };
         pool.run(prepare_own);
@@ -122,16 +123,16 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
             for (int i = 0; i < kChunk; ++i) {
                 if (v == 0) timed(ts, [&] { w0.step(dt), render::draw_world(c, w0, o, serial); });
                 if (v == 1) {
-                    timed(tb, [&] { render::step_and_draw(c, w1, dt, o, balanced, pool); });
+                    timed(tb, [&] { w1.step(dt), render::draw_world(c, w1, o, balanced, pool); });
                     for (int t = 0; t < 2; ++t) {
                         const auto& b = balanced.busy[static_cast<std::size_t>(t)];
                         g[t].push_back(us(b.geometry)), r[t].push_back(us(b.seconds - b.geometry)), wt[t].push_back(us(b.waited));
                     }
                 }
-                if (v == 2) timed(te, [&] { render::step_and_draw(c, w2, dt, o, equal, pool); });
+                if (v == 2) timed(te, [&] { w2.step(dt), render::draw_world(c, w2, o, equal, pool); });
                 if (v == 3) timed(ti, [&] { pool.run(two_alone); });
                 if (v == 4) {
-                    timed(t1, [&] { render::step_and_draw(c, w5, dt, o, one, pool1); });
+                    timed(t1, [&] { w5.step(dt), render::draw_world(c, w5, o, one, pool1); });
                     g1.push_back(us(one.busy[0].geometry)), r1.push_back(us(one.busy[0].seconds - one.busy[0].geometry));
                 }
             }

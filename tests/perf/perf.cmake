@@ -17,7 +17,7 @@ if(NONEUCLID_HAVE_BENCHMARK)
     endif()
 endif()
 
-# One thread against two, interleaved in one process (README "Threads"): a plain program.
+# One thread against two, interleaved in one process (docs/performance.md): a plain program.
 add_executable(parallel_ab bench/parallel_ab.cpp)
 target_link_libraries(parallel_ab PRIVATE noneuclid_render noneuclid_warnings Threads::Threads)
 
@@ -31,7 +31,8 @@ endif()
 
 # The fast paths give the same bits as the plain arithmetic; the threaded frame the same pixels
 # as one thread, for every engine.
-add_executable(perf_tests perf/test_fast_paths.cpp perf/test_parallel.cpp)
+add_executable(perf_tests perf/test_division.cpp perf/test_edge_paths.cpp perf/test_fixed_equidistant.cpp
+    perf/test_raster_paths.cpp perf/test_parallel.cpp)
 target_link_libraries(perf_tests PRIVATE GTest::gtest_main noneuclid_render noneuclid_warnings Threads::Threads)
 gtest_discover_tests(perf_tests DISCOVERY_TIMEOUT 120 PROPERTIES LABELS perf)
 target_link_libraries(no_alloc_tests PRIVATE Threads::Threads)

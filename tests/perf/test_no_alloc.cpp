@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 #include "render/hud.hpp"
 #include "app/frame_loop.hpp"
 #include "app/memory_display.hpp"

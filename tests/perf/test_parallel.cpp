@@ -1,43 +1,29 @@
 // The threaded frame (draw_world over a WorkerPool) writes the same pixels as one thread, bit
 // for bit: every engine (fixed, float, double, the paper's), scenes with grids, many bodies and
 // hidden points (gnomonic at K > 0), aliased and anti-aliased, thick lines, 1 to 4 threads,
-// bands of rows from 1 row to the default, frame after frame of a moving world, and with the
-// backdrop left out, and one band per thread with its edges anywhere. step_and_draw (the bodies' steps on the threads too) leaves the world in
-// the same state, bit for bit, as World::step.
+// band edges anywhere (from one-row bands to the balanced default), frame after frame of a
+// moving world, with the controls held (K changes every frame), with the backdrop left out,
+// and on a canvas with fewer rows than threads.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "render/parallel_frame.hpp"
 
 namespace {
 
 using namespace noneuclid;
 
-// Every number of every body, as bytes (the same bits, not just equal values).
-template <class W>
-bool same_state(const W& a, const W& b) {
-    if (a.K != b.K || a.time != b.time || a.frame != b.frame || a.bodies.size() != b.bodies.size()) return false;
-    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
-        const auto &p = a.bodies[i], &q = b.bodies[i];
-        const typename W::scalar x[] = {p.centre.r, p.centre.theta, p.facing, p.speed, p.travel, p.accel, p.accel_dir, p.spin};
-        const typename W::scalar y[] = {q.centre.r, q.centre.theta, q.facing, q.speed, q.travel, q.accel, q.accel_dir, q.spin};
-        if (std::memcmp(x, y, sizeof x) != 0 || p.step_carry != q.step_carry) return false;
-    }
-    return true;
-}
-
 struct Variant {
     bool backdrop = true;
-    int band_rows = 0;     // 0: the default
-    bool fused = false;    // step_and_draw instead of step, draw_world
     int32_t width = 256;   // line width, 1/256 px
     bool controls = false; // thrust, turn and curvature held
     std::vector<double> edges = {};  // one band per thread at these fixed rows (no balancing); empty: balanced
     uint32_t generation = 0;  // the scratch's frame count to start from
+    int height = 207;         // the canvas's rows (odd: the bands are uneven)
 };
 
 template <class T, bool Paper = false>
@@ -46,19 +32,17 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene(scene_name, {60, 7, 6}, scene));
     scene.curvature = K;
-    world::World<T, Paper> w(scene), w2(scene);
+    world::World<T, Paper> w(scene);
     if (v.controls)
-        for (world::World<T, Paper>* x : {&w, &w2})
-            for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) x->press(a);
+        for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) w.press(a);
     render::DrawScratch<T> serial;
     serial.prepare(w);
     render::WorkerPool pool(threads);
     render::ParallelScratch<T> par;
     par.prepare(w, pool);
-    par.band_rows = v.band_rows;
     if (!v.edges.empty()) par.edge = v.edges, par.balance = false;
     par.generation = v.generation;
-    const int W = 301, H = 207;  // odd sizes: the last band is partial
+    const int W = 301, H = v.height;
     const std::size_t stride = static_cast<std::size_t>(W * f.bytes_per_pixel());
     std::vector<uint8_t> a(stride * H, 0x11), b(stride * H, 0x11);
     const render::Canvas ca(a.data(), W, H, static_cast<std::ptrdiff_t>(stride), f);
@@ -70,13 +54,8 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     for (int i = 0; i < 12; ++i) {
         w.step(T(0.05));
         render::draw_world(ca, w, o, serial, v.backdrop);
-        if (v.fused) {
-            render::step_and_draw(cb, w2, T(0.05), o, par, pool, v.backdrop);
-            ASSERT_TRUE(same_state(w, w2)) << scene_name << " threads " << threads << " frame " << i;
-        } else {
-            render::draw_world(cb, w, o, par, pool, v.backdrop);
-        }
-        ASSERT_EQ(a, b) << scene_name << " K " << K << " threads " << threads << " frame " << i << " band rows " << v.band_rows;
+        render::draw_world(cb, w, o, par, pool, v.backdrop);
+        ASSERT_EQ(a, b) << scene_name << " K " << K << " threads " << threads << " frame " << i;
     }
 }
 
@@ -105,26 +84,6 @@ TEST(Parallel, WithoutBackdropAndOptions) {
                                    render::PixelFormat::xrgb8888(), {.backdrop = false});
 }
 
-// Bands of any height (1 row, odd, larger than the canvas), thick and thin lines, aliased and
-// anti-aliased: the bodies cross band edges everywhere.
-TEST(Parallel, AnyBandHeightAndLineWidth) {
-    const render::PixelFormat fmts[] = {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(),
-                                        render::PixelFormat::rgb888()};
-    const int32_t widths[] = {256, 700, 90};
-    int fi = 0;
-    for (int rows : {1, 9, 50, 1000})
-        for (bool aa : {false, true})
-            for (int wi = 0; wi < 2; ++wi) {
-                const render::PixelFormat f = fmts[fi++ % 3];
-                const int32_t width = widths[(fi + wi) % 3];
-                const int threads = 2 + fi % 2;
-                threaded_equals_serial<fx::fixed>("kiosk", -0.8, geo::Projection::azimuthal_equidistant, aa, threads, f,
-                                                  {.band_rows = rows, .width = width});
-                threaded_equals_serial<double>("stress", 0.4, geo::Projection::stereographic, aa, threads, f,
-                                               {.band_rows = rows, .width = width});
-            }
-}
-
 // One band per thread with its edges anywhere (as balance_bands may put them): one-row bands,
 // a thread with nearly all rows, uneven thirds.
 TEST(Parallel, BandEdgesAnywhere) {
@@ -132,7 +91,7 @@ TEST(Parallel, BandEdgesAnywhere) {
     for (const auto& e : two)
         for (bool aa : {false, true}) {
             const render::PixelFormat f = aa ? render::PixelFormat::xrgb8888() : render::PixelFormat::rgb565();
-            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, aa, 2, f, {.fused = true, .edges = e});
+            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, aa, 2, f, {.edges = e});
             threaded_equals_serial<double>("kiosk", 0.4, geo::Projection::stereographic, aa, 2, f, {.edges = e});
         }
     threaded_equals_serial<fx::fixed>("stress", -0.6, geo::Projection::azimuthal_equidistant, true, 3,
@@ -141,17 +100,39 @@ TEST(Parallel, BandEdgesAnywhere) {
                                    render::PixelFormat::rgb888(), {.edges = {0, 180, 199.5, 207}});
 }
 
+// Bands with their edges anywhere (one row, a few, about half, nearly all), thick and thin
+// lines, aliased and anti-aliased: the bodies cross band edges everywhere.
+TEST(Parallel, AnyBandEdgeAndLineWidth) {
+    const render::PixelFormat fmts[] = {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(),
+                                        render::PixelFormat::rgb888()};
+    const int32_t widths[] = {256, 700, 90};
+    int fi = 0;
+    for (int rows : {1, 9, 50, 200})
+        for (bool aa : {false, true})
+            for (int wi = 0; wi < 2; ++wi) {
+                const render::PixelFormat f = fmts[fi++ % 3];
+                const int32_t width = widths[(fi + wi) % 3];
+                const int threads = 2 + fi % 2;
+                std::vector<double> edges = {0, double(rows)};
+                if (threads == 3) edges.push_back(std::min(206.0, 2.0 * rows + 0.4));
+                edges.push_back(207);
+                threaded_equals_serial<fx::fixed>("kiosk", -0.8, geo::Projection::azimuthal_equidistant, aa, threads, f,
+                                                  {.width = width, .edges = edges});
+                threaded_equals_serial<double>("stress", 0.4, geo::Projection::stereographic, aa, threads, f,
+                                               {.width = width, .edges = edges});
+            }
+}
+
 // The frame count wraps past 2^32 - 1 within the 12 frames: the flags are cleared and 0 is
 // skipped, and the pixels stay those of one thread (a frame numbered 0 would take every
 // cleared entry for written). The race the clearing prevents, a list entry unwritten for 2^32
 // frames read before its thread rewrites it, cannot be brought about on demand.
 TEST(Parallel, FrameCountWraps) {
-    for (int threads : {2, 3})
-        for (int band_rows : {0, 16}) {
-            const Variant v{.band_rows = band_rows, .fused = true, .generation = UINT32_MAX - 5};
-            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, false, threads,
-                                              render::PixelFormat::rgb565(), v);
-        }
+    for (int threads : {2, 3}) {
+        const Variant v{.generation = UINT32_MAX - 5};
+        threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, false, threads,
+                                          render::PixelFormat::rgb565(), v);
+    }
     render::WorkerPool pool(2);
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene("stress", {60, 7, 6}, scene));
@@ -231,19 +212,28 @@ TEST(Parallel, RowSpanIsTheLeastAndGreatestYWithoutBreaks) {
     EXPECT_EQ(cases, 41 * 200);
 }
 
-// step_and_draw: the world's bits and the pixels as World::step then draw_world on one thread,
-// with the controls held (thrust, turn, curvature), every engine.
-TEST(Parallel, StepAndDrawSameWorldAndPixels) {
+// With the controls held (thrust, turn, curvature: K and so every body's shape change every
+// frame), every engine.
+TEST(Parallel, ControlsHeldEveryEngine) {
     for (int threads : {1, 2, 3, 4})
         for (bool aa : {false, true}) {
             const render::PixelFormat f = aa ? render::PixelFormat::xrgb8888() : render::PixelFormat::rgb565();
-            const Variant v{.fused = true, .controls = true};
+            const Variant v{.controls = true};
             threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
             threaded_equals_serial<fx::fixed>("kiosk", 0.5, geo::Projection::gnomonic, aa, threads, f, v);
             threaded_equals_serial<double>("stress", 0.3, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
             threaded_equals_serial<float>("kiosk", -0.3, geo::Projection::orthographic, aa, threads, f, v);
             threaded_equals_serial<double, true>("kiosk", 0.6, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
         }
+}
+
+// A canvas with fewer rows than threads (drawn on the calling thread alone), and one row per
+// thread.
+TEST(Parallel, CanvasWithFewRows) {
+    for (int height : {1, 2, 3})
+        for (int threads : {2, 3, 4})
+            threaded_equals_serial<fx::fixed>("stress", -1, geo::Projection::azimuthal_equidistant, height % 2 == 0, threads,
+                                              render::PixelFormat::rgb565(), {.height = height});
 }
 
 // The pool runs each job once per thread, every time, and can be used for many frames.

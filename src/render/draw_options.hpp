@@ -1,0 +1,25 @@
+// What a drawn frame shows and how: the projection, the lines' style, the backdrop's colours,
+// which bodies are drawn.
+#pragma once
+
+#include <cstdint>
+
+#include "geometry/geometry.hpp"
+#include "render/canvas.hpp"
+#include "render/raster.hpp"
+
+namespace noneuclid::render {
+
+struct DrawOptions {
+    geo::Projection projection = geo::Projection::azimuthal_equidistant;
+    bool antialias = false;
+    int32_t line_width = kSub;  // 1/256 px
+    bool shade_outside = true;
+    Rgb background{6, 8, 14};
+    Rgb outside{26, 30, 44};
+    Rgb rim{90, 100, 130};
+    bool grids = true;   // draw grid bodies
+    bool bodies = true;  // draw the other bodies
+};
+
+}  // namespace noneuclid::render

@@ -1,0 +1,166 @@
+// Part of the rasteriser (raster.cpp, which alone includes it): where pixels go (a canvas of
+// 2, 3 or 4 bytes per pixel, or a visitor), the Plotter that sends them there within the
+// canvas and a row band, and the integer arithmetic of the columns a line crosses.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+#include "render/canvas.hpp"
+#include "render/raster.hpp"
+
+namespace noneuclid::render {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "pixel words are stored little-endian");
+
+// Where pixels go: into a canvas (one instantiation per pixel size, writing whole words, with
+// integer blends for the two fast formats), or to a visitor (tests, counting).
+template <int Bpp>
+struct CanvasSink {
+    static constexpr int bytes = Bpp;
+    const Canvas& c;
+    Rgb color;
+    uint32_t word;
+    uint8_t* base;
+    std::ptrdiff_t stride;
+    bool fast565, fast8888;
+    CanvasSink(const Canvas& canvas, Rgb col)
+        : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
+          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().is_xrgb8888()) {}
+    int width() const { return c.width(); }
+    int height() const { return c.height(); }
+    uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
+    void opaque(int x, int y) const { store(y * stride + x * Bpp); }
+    void store(std::ptrdiff_t offset) const {
+        uint8_t* p = base + offset;
+        if constexpr (Bpp == 4) {
+            std::memcpy(p, &word, 4);
+        } else if constexpr (Bpp == 2) {
+            const uint16_t w = static_cast<uint16_t>(word);
+            std::memcpy(p, &w, 2);
+        } else {
+            p[0] = static_cast<uint8_t>(word), p[1] = static_cast<uint8_t>(word >> 8), p[2] = static_cast<uint8_t>(word >> 16);
+        }
+    }
+    // dst + (src - dst) * a / 255 per channel; a / 255 as (a * 257 + 128) >> 16 over 8-bit values.
+    static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
+        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d);
+        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((diff * static_cast<int32_t>(a) * 257 + (diff >= 0 ? 32768 : -32768)) >> 16));
+    }
+    void blend(int x, int y, int alpha) const {
+        if (alpha >= 255) return opaque(x, y);
+        if constexpr (Bpp == 4) {
+            if (fast8888) {
+                uint8_t* p = at(x, y);
+                uint32_t d;
+                std::memcpy(&d, p, 4);
+                const uint32_t a = static_cast<uint32_t>(alpha);
+                const uint32_t r = mix8(color.r, (d >> 16) & 0xFF, a), g = mix8(color.g, (d >> 8) & 0xFF, a),
+                               b = mix8(color.b, d & 0xFF, a);
+                const uint32_t out = (d & 0xFF000000u) | r << 16 | g << 8 | b;
+                std::memcpy(p, &out, 4);
+                return;
+            }
+        }
+        c.blend(x, y, color, alpha);
+    }
+};
+struct VisitSink {
+    int w, h;
+    PixelVisitor visit;
+    void* context;
+    int width() const { return w; }
+    int height() const { return h; }
+    void opaque(int x, int y) const { visit(x, y, 255, context); }
+    void blend(int x, int y, int alpha) const { visit(x, y, alpha, context); }
+};
+
+// Sends pixels to the sink, skipping a pixel equal to the one just written (shared polyline
+// points) and anything outside the canvas or the row band [row0, row1).
+template <class Sink>
+struct Plotter {
+    const Sink& sink;
+    int row0, row1;     // the rows written: [row0, row1), within the canvas
+    bool banded;        // [row0, row1) is less than the whole canvas
+    bool swap = false;  // (u, v) are (y, x)
+    int last_x = -1 << 30, last_y = -1 << 30;
+
+    Plotter(const Sink& s, RowRange rows)
+        : sink(s), row0(rows.y0 > 0 ? rows.y0 : 0), row1(rows.y1 < s.height() ? rows.y1 : s.height()),
+          banded(row0 > 0 || row1 < s.height()) {}
+
+    template <class I>
+    bool inside(I x, I y) const { return x >= 0 && y >= row0 && x < sink.width() && y < row1; }
+    template <class I>
+    void opaque(I u, I v) {
+        const I x = swap ? v : u, y = swap ? u : v;
+        if (!inside(x, y) || (x == last_x && y == last_y)) return;
+        sink.opaque(static_cast<int>(x), static_cast<int>(y));
+        last_x = static_cast<int>(x), last_y = static_cast<int>(y);
+    }
+    void blend(int64_t u, int64_t v, int alpha) {
+        const int64_t x = swap ? v : u, y = swap ? u : v;
+        if (!inside(x, y)) return;
+        sink.blend(static_cast<int>(x), static_cast<int>(y), alpha);
+    }
+    // A pixel known to be on the canvas, with no shared-point check (the loop's inner pixels).
+    void raw(int64_t u, int64_t v) const {
+        sink.opaque(static_cast<int>(swap ? v : u), static_cast<int>(swap ? u : v));
+    }
+    // Remember the segment's last pixel for the next segment's shared-point check.
+    template <class I>
+    void note_last(I u, I v) {
+        const I x = swap ? v : u, y = swap ? u : v;
+        if (inside(x, y)) last_x = static_cast<int>(x), last_y = static_cast<int>(y);
+    }
+};
+
+int64_t floor_div(int64_t a, int64_t b) {  // b > 0
+    const int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+int64_t ceil_div(int64_t a, int64_t b) { return -floor_div(-a, b); }  // b > 0
+
+// The major-axis columns whose centres lie in [u0, u1) (or (u1, u0] going down), as a first
+// index, a count and a step.
+template <class I>
+struct ColumnsOf {
+    I first, count, step;
+};
+using Columns = ColumnsOf<int64_t>;
+// floor(v / 256) and ceil(v / 256) by arithmetic shifts (C++20: >> of a negative value rounds
+// toward negative infinity).
+template <class I>
+I floor_sub(I v) { return v >> kSubBits; }
+template <class I>
+I ceil_sub(I v) { return -((-v) >> kSubBits); }
+template <class I>
+ColumnsOf<I> columns(I u0, I u1) {
+    if (u1 > u0) {
+        const I a = ceil_sub<I>(u0 - kSub / 2), b = ceil_sub<I>(u1 - kSub / 2) - 1;
+        return {a, b >= a ? b - a + 1 : 0, 1};
+    }
+    const I a = floor_sub<I>(u0 - kSub / 2), b = floor_sub<I>(u1 - kSub / 2) + 1;
+    return {a, a >= b ? a - b + 1 : 0, -1};
+}
+// Cuts the columns to [umin, umax); false if none is left.
+template <class I>
+bool cut_columns(ColumnsOf<I>& col, I umin, I umax) {
+    if (col.count == 0) return false;
+    I last = col.first + (col.count - 1) * col.step;
+    if (col.step > 0) {
+        if (col.first < umin) col.first = umin;
+        if (last > umax - 1) last = umax - 1;
+        col.count = last - col.first + 1;
+    } else {
+        if (col.first > umax - 1) col.first = umax - 1;
+        if (last < umin) last = umin;
+        col.count = col.first - last + 1;
+    }
+    return col.count > 0;
+}
+
+}  // namespace
+}  // namespace noneuclid::render

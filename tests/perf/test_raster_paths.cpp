@@ -1,0 +1,155 @@
+// The rasteriser's and the backdrop's fast paths write what the plain loops write, bit for
+// bit: draw_polyline (32-bit loops, byte offsets, skipped checks) against the generic 64-bit
+// loop behind visit_polyline; the backdrop as spans against Canvas::clear +
+// shade_outside_circle; fill_span against the pixels one by one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "render/draw_world.hpp"
+
+namespace {
+
+using namespace noneuclid;
+using fx::fixed;
+
+TEST(FastPaths, BackdropSpansAreClearPlusShade) {
+    for (render::PixelFormat f : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(), render::PixelFormat::rgb888()})
+        for (auto [w, h] : {std::pair{800, 480}, std::pair{33, 97}, std::pair{1, 1}, std::pair{480, 480}, std::pair{101, 40}})
+            for (double R : {3.14159265358979, 1.0, 0.3})
+                for (bool shade : {true, false}) {
+                    const std::size_t stride = static_cast<std::size_t>(w * f.bytes_per_pixel() + 8);
+                    std::vector<uint8_t> x(stride * static_cast<std::size_t>(h), 0xAB), y = x;
+                    const render::Canvas cx(x.data(), w, h, static_cast<std::ptrdiff_t>(stride), f);
+                    const render::Canvas cy(y.data(), w, h, static_cast<std::ptrdiff_t>(stride), f);
+                    render::DrawOptions o;
+                    o.shade_outside = shade;
+                    const auto m = render::ScreenMap<double>::of(cx, R);
+                    render::draw_backdrop(cx, m, R, o);
+                    cy.clear(o.background);
+                    if (shade) render::shade_outside_circle(cy, m.cx, m.cy, m.scale * R, o.outside);
+                    ASSERT_EQ(x, y) << w << "x" << h << " R " << R << " shade " << shade;
+                }
+}
+
+// What draw_polyline writes, built from visit_polyline's pixels: the generic 64-bit loop (no
+// byte offsets, no 32-bit error terms, no skipped checks), each pixel set or blended through
+// the Canvas's own word access.
+// (XRGB8888's fast blend (raster.cpp, CanvasSink::mix8) adds q = (src - dst) a 257 / 2^16 per
+// channel as floor(q + 1/2) when q >= 0 and floor(q - 1/2) when q < 0, which is not always
+// Canvas::blend's rounding of (src - dst) a / 255: that format's blend is redone here from that
+// definition, in double.)
+struct VisitInto {
+    const render::Canvas* c;
+    render::Rgb color;
+};
+void put_visited(int x, int y, int alpha, void* ctx) {
+    const auto& v = *static_cast<VisitInto*>(ctx);
+    if (alpha >= 255) return v.c->set(x, y, v.color);
+    if (!v.c->format().is_xrgb8888()) return v.c->blend(x, y, v.color, alpha);
+    const uint32_t d = v.c->get_word(x, y);
+    auto mix = [alpha](int s, int t) {
+        const double q = (s - t) * alpha * 257 / 65536.0;
+        return static_cast<uint32_t>(t + static_cast<int>(q >= 0 ? std::floor(q + 0.5) : std::floor(q - 0.5)));
+    };
+    const uint32_t r = mix(v.color.r, static_cast<int>(d >> 16 & 0xFF)), g = mix(v.color.g, static_cast<int>(d >> 8 & 0xFF)),
+                   b = mix(v.color.b, static_cast<int>(d & 0xFF));
+    v.c->set_word(x, y, (d & 0xFF000000u) | r << 16 | g << 8 | b);
+}
+
+// A sub-pixel coordinate along one axis of a canvas `side` px long: mostly on it, often near or
+// over its borders, sometimes far off or at the ends of the int32 range.
+int32_t random_coordinate(std::mt19937& rng, int side) {
+    const uint32_t kind = rng() % 16;
+    const int32_t s = side * 256;
+    if (kind < 8) return static_cast<int32_t>(rng() % static_cast<uint32_t>(s));
+    if (kind < 12) return static_cast<int32_t>(rng() % 2048) - 1024 + (rng() % 2 ? 0 : s);  // a border, +-4 px
+    if (kind == 12) return static_cast<int32_t>(rng() % (8u << 20)) - (4 << 20);               // +-16384 px
+    if (kind == 13) return static_cast<int32_t>(rng());                                          // anywhere in int32
+    if (kind == 14) return rng() % 2 ? INT32_MAX : INT32_MIN + 1;
+    return (rng() % 2 ? 1 : -1) * (1 << 30);  // to_sub's saturation
+}
+
+TEST(FastPaths, RasterIntoACanvasIsTheGenericLoop) {
+    const render::PixelFormat formats[] = {render::PixelFormat::rgb565(), render::PixelFormat::bgr565(),
+                                           render::PixelFormat::xrgb8888(), render::PixelFormat::xbgr8888(),
+                                           render::PixelFormat::rgb888(), render::PixelFormat::bgr888()};
+    // Small canvases (the 32-bit paths) and ones over 8192 px on a side (the 64-bit ones).
+    const std::pair<int, int> sizes[] = {{61, 37}, {203, 120}, {5, 300}, {9000, 3}, {2, 8300}};
+    const render::LineStyle styles[] = {{false, 256}, {false, 100}, {true, 256}, {false, 700}, {true, 600}};
+    std::mt19937 rng(7);
+    long lines = 0;
+    for (const auto& f : formats)
+        for (auto [w, h] : sizes) {
+            const int bpp = f.bytes_per_pixel();
+            const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w) * bpp + 5;  // odd spare bytes
+            // Random bytes under the lines (blends see them) and around the canvas; the lines pile up.
+            std::vector<uint8_t> a(static_cast<std::size_t>(stride) * static_cast<std::size_t>(h) + 64);
+            for (auto& x : a) x = static_cast<uint8_t>(rng());
+            std::vector<uint8_t> b = a;
+            const render::Canvas ca(a.data() + 32, w, h, stride, f), cb(b.data() + 32, w, h, stride, f);
+            for (int k = 0; k < 300; ++k) {
+                const int n = 1 + static_cast<int>(rng() % 6);
+                const bool near = rng() % 3 == 0;  // short segments: a polyline on a curve
+                render::SubPoint pts[6];
+                for (int i = 0; i < n; ++i) {
+                    pts[i] = {random_coordinate(rng, w), random_coordinate(rng, h)};
+                    if (near && i > 0)
+                        pts[i] = {static_cast<int32_t>(std::clamp<int64_t>(int64_t{pts[i - 1].x} + static_cast<int>(rng() % 4096) - 2048, INT32_MIN + 1, INT32_MAX)),
+                                  static_cast<int32_t>(std::clamp<int64_t>(int64_t{pts[i - 1].y} + static_cast<int>(rng() % 4096) - 2048, INT32_MIN + 1, INT32_MAX))};
+                }
+                // Half the polylines on a grid of half pixels: lines through pixel corners and
+                // centres, where the error term meets its bound exactly (ties).
+                if (rng() % 2)
+                    for (int i = 0; i < n; ++i) pts[i].x &= ~127, pts[i].y &= ~127;
+                const render::LineStyle style = styles[rng() % 5];
+                const bool closed = rng() % 4 == 0;
+                const render::Rgb color{static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng())};
+                const bool as_line = n == 2 && rng() % 2 == 0;  // with its end point: the open polyline
+                // Two lines in three into a row band (a thread's share of draw_world): thin lines
+                // past its edges take the 32-bit loop, visit_polyline cuts them exactly in 64 bits.
+                render::RowRange rows;
+                if (rng() % 3 != 0) {
+                    const int a0 = static_cast<int>(rng() % static_cast<uint32_t>(h + 6)) - 3,
+                              a1 = static_cast<int>(rng() % static_cast<uint32_t>(h + 6)) - 3;
+                    rows = {std::min(a0, a1), std::max(a0, a1) + (rng() % 4 == 0 ? 1 : 0)};
+                }
+                if (as_line)
+                    render::draw_line(ca, pts[0], pts[1], color, style, true, rows);
+                else
+                    render::draw_polyline(ca, pts, n, closed, color, style, rows);
+                VisitInto v{&cb, color};
+                render::visit_polyline(w, h, pts, n, closed && !as_line, style, put_visited, &v, rows);
+                ASSERT_EQ(a, b) << f.name << " " << w << "x" << h << " line " << k << " n " << n << " (" << pts[0].x << ","
+                                << pts[0].y << ") -> (" << pts[n > 1 ? 1 : 0].x << "," << pts[n > 1 ? 1 : 0].y
+                                << ") aa " << style.antialias << " width " << style.width << " rows " << rows.y0
+                                << ".." << rows.y1;
+                ++lines;
+            }
+        }
+    EXPECT_EQ(lines, 6 * 5 * 300);
+}
+
+TEST(FastPaths, SpansAreThePixelsOneByOne) {
+    std::mt19937 rng(48);
+    for (const auto& f : {render::PixelFormat::rgb565(), render::PixelFormat::rgb888(), render::PixelFormat::xrgb8888()}) {
+        const int bpp = f.bytes_per_pixel();
+        for (int n = 0; n <= 200; ++n)
+            for (int start : {0, 1, 3}) {
+                const uint32_t word = f.pack({static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng())});
+                const int w = start + n + 2;
+                std::vector<uint8_t> x(static_cast<std::size_t>(w * bpp), 0x5A), y = x;
+                const render::Canvas cy(y.data(), w, 1, w * bpp, f);
+                render::detail::fill_span(x.data() + start * bpp, n, render::detail::SpanPattern(word, bpp));
+                for (int i = start; i < start + n; ++i) cy.set_word(i, 0, word);
+                ASSERT_EQ(x, y) << f.name << " n " << n << " from " << start;
+            }
+    }
+}
+
+}  // namespace
