@@ -1,5 +1,5 @@
 // Board files (TOML): what a kiosk is wired to and how it shows the world. One per board in
-// boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic); the README's kiosk section documents them.
+// boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic); docs/file-formats.md documents them.
 //
 //     name = "Raspberry Pi 4 Model B / 400"
 //     models = ["Raspberry Pi 4", "Raspberry Pi 400"]  # /proc/device-tree/model prefixes

@@ -1,4 +1,4 @@
-// Scene files in TOML (parsed with toml++). The format (README, "Scene files"):
+// Scene files in TOML (parsed with toml++). The format (docs/file-formats.md, "Scene files"):
 //
 //     curvature = -1.0            # K in [-1, 1]
 //     limit_radius = 3.14159      # R in world units

@@ -1,5 +1,5 @@
 # `cmake --install` into a scratch prefix: the binary, every board file and the systemd unit
-# land where the README says, and the unit starts the installed binary.
+# land where docs/kiosk.md says, and the unit starts the installed binary.
 #   cmake -DBUILD=<build dir> -DPREFIX=<scratch> -DSOURCE=<source dir> -P install_layout.cmake
 file(REMOVE_RECURSE ${PREFIX})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}

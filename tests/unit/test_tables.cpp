@@ -93,7 +93,7 @@ TEST(Tables, EquidistantRatioInterpolatesToTheStatedError) {
 
 TEST(Tables, FitTheMemoryBudget) {
     EXPECT_LE(t::table_bytes, 64u * 1024u);
-    // What the README reports.
+    // What docs/accuracy.md and docs/design.md report.
     RecordProperty("table_bytes", static_cast<int>(t::table_bytes));
 }
 

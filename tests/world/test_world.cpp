@@ -484,7 +484,7 @@ TEST(LongRun, AMillionStepsOfTheKioskCoasting) {
             EXPECT_LE(fx_abs(b.facing), kPi + 1e-4) << b.desc->name;
         }
         // The fixed-vs-double distance is reported, not asserted: it is the sum of each step's
-        // coherent rounding of a small displacement in Q16.16 (README, "Long run").
+        // coherent rounding of a small displacement in Q16.16 (docs/accuracy.md, "The long run").
         (void)worst_drift;
     }
 }
