@@ -14,6 +14,15 @@
 
 #include "render/draw_world.hpp"
 
+// A measurement for --gtest_output=xml (RecordProperty), formatted like printf.
+template <class... A>
+void noneuclid_test_record(const char* format, A... args) {
+    char text[512];
+    std::snprintf(text, sizeof text, format, args...);
+    static int n = 0;
+    ::testing::Test::RecordProperty("measured_" + std::to_string(++n), text);
+}
+
 namespace {
 
 using namespace noneuclid;
@@ -120,7 +129,7 @@ ProjErr projected_error(geo::Projection proj) {
 TEST(FastPaths, ProjectedEdgePointsMatchThePolarPath) {
     for (geo::Projection proj : geo::kProjections) {
         const ProjErr f = projected_error<fixed>(proj), l = projected_error<float>(proj), d = projected_error<double>(proj);
-        std::printf("edge_projected %-13s max px error (polar path before): fixed %.3g (%.3g), float %.3g (%.3g), double %.3g; "
+        ::noneuclid_test_record("edge_projected %-13s max px error (polar path before): fixed %.3g (%.3g), float %.3g (%.3g), double %.3g; "
                     "visibility differs %d\n",
                     geo::projection_name(proj), f.fast, f.polar, l.fast, l.polar, d.fast, f.hidden_mismatch + l.hidden_mismatch + d.hidden_mismatch);
         EXPECT_LE(f.fast, f.polar + 0.01) << geo::projection_name(proj);
@@ -337,7 +346,7 @@ TEST(FastPaths, BodyPointsMatchThePolarPath) {
         for (geo::Projection proj : geo::kProjections) {
             const PathErr f = body_path_error<fixed>(c.scene, c.K, proj), l = body_path_error<float>(c.scene, c.K, proj),
                           d = body_path_error<double>(c.scene, c.K, proj);
-            std::printf("%-6s K %4.1f %-13s max px error (polar path before): fixed %.3g (%.3g), float %.3g (%.3g), "
+            ::noneuclid_test_record("%-6s K %4.1f %-13s max px error (polar path before): fixed %.3g (%.3g), float %.3g (%.3g), "
                         "double %.3g (%.3g); %ld points; breaks differ in %d bodies\n",
                         c.scene, c.K, geo::projection_name(proj), f.fast, f.polar, l.fast, l.polar, d.fast, d.polar, f.points,
                         f.mismatched + l.mismatched + d.mismatched);

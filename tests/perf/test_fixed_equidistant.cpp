@@ -13,6 +13,15 @@
 
 #include "render/draw_world.hpp"
 
+// A measurement for --gtest_output=xml (RecordProperty), formatted like printf.
+template <class... A>
+void noneuclid_test_record(const char* format, A... args) {
+    char text[512];
+    std::snprintf(text, sizeof text, format, args...);
+    static int n = 0;
+    ::testing::Test::RecordProperty("measured_" + std::to_string(++n), text);
+}
+
 namespace {
 
 using namespace noneuclid;
@@ -123,7 +132,7 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
                     ++flat;
                 }
             }
-            std::printf("K %5.2f %dx%d: worst %.4f px over %ld points (%ld past the equator; %ld left to the general "
+            ::noneuclid_test_record("K %5.2f %dx%d: worst %.4f px over %ld points (%ld past the equator; %ld left to the general "
                         "path)\n", K, size.first, size.second, worst, shown, south_points, left);
             if (K > 0) {
                 EXPECT_GT(south_points, 10000) << K;
@@ -133,7 +142,7 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
             if (K != 0) {
                 EXPECT_GT(left, 0) << K;  // the domain's edge was reached
             } else {
-                std::printf("K  0.00 %dx%d, the plane's path: worst %.4f px over %ld points\n", size.first, size.second,
+                ::noneuclid_test_record("K  0.00 %dx%d, the plane's path: worst %.4f px over %ld points\n", size.first, size.second,
                             flat_worst, flat);
                 EXPECT_EQ(flat, shown);
                 EXPECT_LE(flat_worst, 0.012);
@@ -257,7 +266,7 @@ TEST(FastPaths, FixedEquidistantPointsAreTheGeneralPath) {
             }
         }
         const std::string name = std::string(c.scene) == "stress" ? "stress, level " + std::to_string(c.level) : c.scene;
-        std::printf("%-16s K %4.1f: worst %.4f px from the general path over %ld points; %ld slerp points "
+        ::noneuclid_test_record("%-16s K %4.1f: worst %.4f px from the general path over %ld points; %ld slerp points "
                     "and %ld vertices below w = -1/2, %ld breaks\n", name.c_str(), c.K, worst, points, counts.outside,
                     counts.vertices_outside, breaks);
         EXPECT_LE(worst, 0.03) << c.scene << " " << c.K;
