@@ -16,6 +16,11 @@ namespace noneuclid::app {
 
 namespace {
 
+const char* display_name(platform::DisplayKind k) {
+    static const char* const names[] = {"x11", "fbdev", "png"};
+    return names[static_cast<int>(k)];
+}
+
 // The display asked for, or the one that fits this machine; said in one line.
 platform::DisplayKind display_kind(const Options& given) {
     platform::DisplayChoice c;
@@ -27,8 +32,7 @@ platform::DisplayKind display_kind(const Options& given) {
                                                : platform::DisplayKind::png;
         c.reason = "--display " + given.display + " asked for it";
     }
-    static const char* const names[] = {"x11", "fbdev", "png"};
-    std::fprintf(stderr, "noneuclid: display %s, because %s.\n", names[static_cast<int>(c.display)], c.reason.c_str());
+    std::fprintf(stderr, "noneuclid: display %s, because %s.\n", display_name(c.display), c.reason.c_str());
     return c.display;
 }
 
@@ -89,8 +93,7 @@ int run_command(int argc, char** argv, int first) {
         }
     }
     Recorder recorder(file);
-    static const char* const names[] = {"x11", "fbdev", "png"};
-    if (file) record_settings(recorder, o, names[static_cast<int>(kind)], font, display->canvas().format());
+    if (file) record_settings(recorder, o, display_name(kind), font, display->canvas().format());
     const std::unique_ptr<Session> session =
         make_session(o.engine, scene, session_options(o, scene, o.legend), font.font, file ? &recorder : nullptr);
     LoopOptions lo;

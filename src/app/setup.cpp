@@ -54,11 +54,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     rec.setting("font", font_setting(font));
     for (render::PixelFormat f :
          {render::PixelFormat::xrgb8888(), render::PixelFormat::rgb565(), render::PixelFormat::rgb888()})
-        if (f.bits_per_pixel == format.bits_per_pixel && f.red.offset == format.red.offset &&
-            f.red.length == format.red.length && f.green.offset == format.green.offset &&
-            f.green.length == format.green.length && f.blue.offset == format.blue.offset &&
-            f.blue.length == format.blue.length)
-            rec.setting("format", f.name);
+        if (f.same_layout(format)) rec.setting("format", f.name);
     if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");
 }
 

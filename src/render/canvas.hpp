@@ -44,6 +44,11 @@ struct PixelFormat {
         return bits_per_pixel == 32 && red.offset == 16 && red.length == 8 && green.offset == 8 &&
                green.length == 8 && blue.offset == 0 && blue.length == 8;
     }
+    // The same word size and channels (the name aside).
+    constexpr bool same_layout(const PixelFormat& o) const {
+        auto same = [](Channel a, Channel b) { return a.offset == b.offset && a.length == b.length; };
+        return bits_per_pixel == o.bits_per_pixel && same(red, o.red) && same(green, o.green) && same(blue, o.blue);
+    }
     // The formats the canvas can pack: 16, 24 or 32 bits, channels of 1..8 bits inside the word.
     constexpr bool supported() const {
         auto ok = [this](Channel c) { return c.length >= 1 && c.length <= 8 && c.offset + c.length <= bits_per_pixel; };
