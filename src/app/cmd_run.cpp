@@ -82,6 +82,9 @@ int run_command(int argc, char** argv, int first) {
         return 2;
     }
     if (o.legend.empty()) o.legend = display->legend();
+    if (kiosk && given.size_given)
+        std::fprintf(stderr, "noneuclid: --size is left unused: the kiosk draws at the framebuffer's size, %dx%d.\n",
+                     display->canvas().width(), display->canvas().height());
 
     std::FILE* file = nullptr;
     if (!o.record.empty()) {
