@@ -58,6 +58,7 @@ int run_command(int argc, char** argv, int first) {
     Options o = layered_options(argc, argv, first, Command::run, script, kiosk ? &board : nullptr);
     if (kind == platform::DisplayKind::png) {
         if (o.frames == 0) o.frames = 600;  // ten seconds of world time: nobody is there to close it
+        if (!o.attract_given) o.attract = 1;  // nor at the keys: the autopilot flies
         if (o.screenshot.empty()) o.screenshot = "out/run.png";
         std::error_code ec;
         const std::filesystem::path dir = std::filesystem::path(o.screenshot).parent_path();

@@ -82,7 +82,7 @@ bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
     else if (is("--input", kRun)) o.input = input_value(opt, a.value(opt));
     else if (is("--record", kRun)) o.record = a.value(opt);
     else if (is("--screenshot", kRun)) o.screenshot = a.value(opt);
-    else if (is("--attract", kRun)) o.attract = a.number(opt, 0, 1e7);
+    else if (is("--attract", kRun)) o.attract = a.number(opt, 0, 1e7), o.attract_given = true;
     else if (is("--threads", kRun)) o.threads = static_cast<int>(a.count(opt, 1, 16));
     else if (is("--fps", kRun)) o.fps = a.number(opt, 1, 1000);
     else if (is("--stats", kRun)) o.stats = true;

@@ -42,6 +42,7 @@ struct Options {
     std::string device;         // fbdev:DEVICE ("" the board's)
     std::string board, input = "auto", record, screenshot;
     double attract = 0;         // idle seconds before attract mode; 0 off
+    bool attract_given = false; // --attract (else the display's default)
     double sweep = 40;          // attract mode's sweep of K from -1 to +1, seconds (the board's)
     int threads = 1;
     double fps = 60;
