@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
+
+#include "world/text_file.hpp"
 
 namespace noneuclid::app {
 
@@ -98,14 +99,12 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
 }
 
 bool load_script(const std::string& path, Script& out, ScriptError& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = {path, 0, "cannot read the actions file: check the path"};
+    std::string text, why;
+    if (!world::read_text_file(path, world::kActionsFileLimit, "an actions file", text, why)) {
+        error = {path, 0, "the actions file: " + why + ": check the path"};
         return false;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_script(text.str(), path, out, error);
+    return parse_script(text, path, out, error);
 }
 
 }  // namespace noneuclid::app

@@ -13,7 +13,9 @@ world::Scene load_scene(const Options& o) {
     if (!world::builtin_scene(o.scene, o.params, scene)) {
         world::SceneError err;
         if (!world::load_scene_file(o.scene, scene, err)) {
-            if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos) {
+            std::error_code ec;
+            if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos &&
+                !std::filesystem::exists(std::filesystem::symlink_status(o.scene, ec))) {
                 std::string names;
                 for (const char* const* n = world::builtin_scene_names(); *n; ++n)
                     names += std::string(names.empty() ? "" : ", ") + *n;

@@ -1,6 +1,7 @@
 #include "world/board.hpp"
 
 #include "geometry/geometry.hpp"
+#include "world/text_file.hpp"
 #include "world/toml_reader.hpp"
 
 namespace noneuclid::world {
@@ -110,9 +111,10 @@ bool parse_board(const std::string& text, const std::string& name, Board& out, B
 }
 
 bool load_board_file(const std::string& path, Board& out, BoardError& error) {
-    std::string text;
-    if (!tomlr::read_text_file(path, text)) {
-        error = {path, 0, 0, "cannot read the board file: check the path, or name a board in boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic)"};
+    std::string text, why;
+    if (!read_text_file(path, kBoardFileLimit, "a board file", text, why)) {
+        error = {path, 0, 0, "the board file: " + why +
+                                 ": check the path, or name a board in boards/ (rpi-zero2w, rpi3, rpi4, rpi5, generic)"};
         return false;
     }
     return parse_board(text, path, out, error);

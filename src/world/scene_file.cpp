@@ -1,8 +1,8 @@
 #include "world/scene_file.hpp"
 
-#include <fstream>
 #include <sstream>
 
+#include "world/text_file.hpp"
 #include "world/toml_reader.hpp"
 
 namespace noneuclid::world {
@@ -104,9 +104,9 @@ bool parse_scene(const std::string& text, const std::string& name, Scene& out, S
 }
 
 bool load_scene_file(const std::string& path, Scene& out, SceneError& error) {
-    std::string text;
-    if (!tomlr::read_text_file(path, text)) {
-        error = {path, 0, 0, "cannot read the scene file: check the path, or name a built-in scene (see --help)"};
+    std::string text, why;
+    if (!read_text_file(path, kSceneFileLimit, "a scene file", text, why)) {
+        error = {path, 0, 0, "the scene file: " + why + ": check the path, or name a built-in scene (see --help)"};
         return false;
     }
     return parse_scene(text, path, out, error);

@@ -11,7 +11,6 @@
 #include <string>
 #include <toml++/toml.h>
 
-#include <fstream>
 
 #include "world/scene.hpp"  // Rgb
 #include "world/scene_file.hpp"  // SceneError
@@ -163,16 +162,6 @@ bool parse_toml(const std::string& text, const std::string& name, SceneError& er
         error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
     }
     return false;
-}
-
-// The whole file, or false if it cannot be read.
-inline bool read_text_file(const std::string& path, std::string& out) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return false;
-    std::ostringstream text;
-    text << in.rdbuf();
-    out = text.str();
-    return true;
 }
 
 }  // namespace noneuclid::world::tomlr

@@ -1,15 +1,18 @@
 // The world: physics against the reference model, the limit circle, live curvature and
 // actions, determinism, built-in scenes, scene files and their errors, the dump.
 #include <gtest/gtest.h>
+#include <sys/stat.h>  // mkfifo
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
 #include "geometry/reference.hpp"
 #include "world/dump.hpp"
 #include "world/scene_file.hpp"
+#include "world/text_file.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
@@ -402,7 +405,7 @@ TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
     Scene s;
     SceneError err;
     EXPECT_FALSE(load_scene_file("/nonexistent/scene.toml", s, err));
-    EXPECT_EQ(err.to_string().rfind("/nonexistent/scene.toml: cannot read the scene file", 0), 0u) << err.to_string();
+    EXPECT_EQ(err.to_string().rfind("/nonexistent/scene.toml: the scene file: cannot read it", 0), 0u) << err.to_string();
 }
 
 TEST(SceneFile, GridsAndExtensions) {
@@ -490,3 +493,35 @@ TEST(LongRun, AMillionStepsOfTheKioskCoasting) {
 }
 
 }  // namespace
+
+// ---- input files ----------------------------------------------------------------------------
+
+// Only a regular file within its limit is read: a FIFO does not block (it is not opened), a
+// directory or a device is not read as an empty or endless file.
+TEST(InputFiles, OnlyRegularFilesWithinTheLimit) {
+    const std::string dir = ::testing::TempDir() + "input_files";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string fifo = dir + "/fifo", big = dir + "/big.toml", small = dir + "/small.toml";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    { std::ofstream(big) << std::string(kSceneFileLimit + 1, '#'); }
+    { std::ofstream(small) << "curvature = 0.5\n"; }
+    std::string text, why;
+    EXPECT_FALSE(read_text_file(fifo, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("not a regular file"), std::string::npos) << why;
+    EXPECT_FALSE(read_text_file(dir, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_EQ(why, "it is a directory, not a file");
+    EXPECT_FALSE(read_text_file("/dev/zero", kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("not a regular file"), std::string::npos) << why;
+    EXPECT_FALSE(read_text_file(big, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_EQ(why, "it is 1048577 bytes, over the 1 MiB a scene file may have");
+    EXPECT_FALSE(read_text_file(dir + "/none", kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("cannot read it (No such file or directory)"), std::string::npos) << why;
+    ASSERT_TRUE(read_text_file(small, kSceneFileLimit, "a scene file", text, why)) << why;
+    EXPECT_EQ(text, "curvature = 0.5\n");
+    // Through the scene loader: one sentence with the path.
+    Scene s;
+    SceneError err;
+    EXPECT_FALSE(load_scene_file(fifo, s, err));
+    EXPECT_EQ(err.to_string().rfind(fifo + ": the scene file: it is not a regular file", 0), 0u) << err.to_string();
+}
