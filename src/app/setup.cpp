@@ -4,13 +4,16 @@
 #include <system_error>
 
 #include "app/commands.hpp"
+#include "world/budget.hpp"
 #include "world/scene_file.hpp"
 
 namespace noneuclid::app {
 
 world::Scene load_scene(const Options& o) {
     world::Scene scene;
-    if (!world::builtin_scene(o.scene, o.params, scene)) {
+    std::string over;
+    if (!world::builtin_scene(o.scene, o.params, scene, &over)) {
+        if (!over.empty()) usage_error(over + " (--bodies, --vertices, --tessellation).");
         world::SceneError err;
         if (!world::load_scene_file(o.scene, scene, err)) {
             std::error_code ec;
@@ -25,6 +28,7 @@ world::Scene load_scene(const Options& o) {
             usage_error(err.to_string());
         }
     }
+    if (!world::within_budget(scene, over)) usage_error(o.scene + ": the scene: " + over + ".");
     if (o.has_curvature) scene.curvature = o.curvature;
     return scene;
 }

@@ -58,13 +58,15 @@ struct SceneParams {
 
 // The names of the built-in scenes, null-terminated.
 const char* const* builtin_scene_names();
-// Fills `out` with the named built-in scene; false if there is none by that name.
-bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out);
+// Fills `out` with the named built-in scene; false if there is none by that name, or (with
+// `why` set) if the stress scene's parameters ask for more than a world may hold (budget.hpp).
+bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out, std::string* why = nullptr);
 
 // Grid families, as bodies (they bend with K like any body): the geodesics perpendicular to the
 // x and y axes at multiples of `spacing`, and `radial` lines through O, each `length` long
-// from its foot (on the axis or at O), with a vertex every `step`.
-void add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color);
-void add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color);
+// from its foot (on the axis or at O), with a vertex every `step`. False, adding nothing, with
+// a sentence in `why` if the lines would take the world over its budget (budget.hpp).
+bool add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color, std::string& why);
+bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color, std::string& why);
 
 }  // namespace noneuclid::world

@@ -55,10 +55,13 @@ void read_grid(const toml::table& t, Scene& scene) {
     const double length = r.number("length", scene.limit_radius, 0.01, 1e4, "world units");
     const double step = r.number("step", 0.25, 0.001, 1e4, "world units between vertices");
     const Rgb color = r.color("color", {70, 90, 120});
+    std::string why;
     if (kind == "axes") {
-        add_axis_grid(scene, r.number("spacing", 0.5, 0.01, 1e4, "world units"), length, step, color);
+        if (!add_axis_grid(scene, r.number("spacing", 0.5, 0.01, 1e4, "world units"), length, step, color, why))
+            throw Bad{t.source(), "grid: " + why};
     } else if (kind == "radial") {
-        add_radial_grid(scene, static_cast<int>(r.integer("lines", 12, 1, 360, "lines")), length, step, color);
+        if (!add_radial_grid(scene, static_cast<int>(r.integer("lines", 12, 1, 360, "lines")), length, step, color, why))
+            throw Bad{t.source(), "grid: " + why};
     } else {
         throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + kind + "\""};
     }

@@ -4,6 +4,10 @@
 
 #include "world/scene.hpp"
 
+#include <algorithm>
+
+#include "world/budget.hpp"
+
 namespace noneuclid::world {
 namespace {
 
@@ -50,9 +54,15 @@ SceneBody line(const char* name, double length, double step, bool both, Rgb colo
     return b;
 }
 
+// The built-in scenes' grids (a few hundred vertices: well within the budget).
+void axis_grid(Scene& s) {
+    std::string unused;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid, unused);
+}
+
 void fig1(Scene& s) {
     s.curvature = -1;
-    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    axis_grid(s);
     s.bodies.push_back(place(polygon("square", 4, 0.3, 45, {255, 200, 64}), 1.2, 20, 0, 0.25, 100, 20));
     s.bodies.push_back(place(polygon("triangle", 3, 0.3, 90, {64, 220, 120}), 1.6, 150, 30, 0.3, 250, -30));
     s.bodies.push_back(place(polygon("hexagon", 6, 0.25, 0, {120, 160, 255}), 0.8, 260, 0, 0.2, 10, 15));
@@ -62,13 +72,13 @@ void fig1(Scene& s) {
 // Motion along the geodesic orthogonal to the direction `deg` at distance 1 from O.
 void orthogonal_motion(Scene& s, double deg) {
     s.curvature = -1;
-    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    axis_grid(s);
     SceneBody b = polygon("square", 4, 0.15, 45, {255, 200, 64});
     s.bodies.push_back(place(b, 1.0, deg, deg + 90, 0.4, deg + 90, 0));
 }
 void fig16(Scene& s) {
     s.curvature = -1;
-    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    axis_grid(s);
     // The paper's square: vertices (90, pi/8), (90, 3pi/8), (90, 5pi/8), (90, 7pi/8), taken as
     // written (local rho in the paper's pixels, phi in radians), spinning about its centre.
     SceneBody b;
@@ -81,13 +91,14 @@ void fig16(Scene& s) {
 void fig17(Scene& s) {
     s.curvature = -1;
     s.sweep_rate = 0.4;  // -1 to +1 in 5 s, and back
-    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
+    axis_grid(s);
     s.bodies.push_back(place(polygon("square", 4, 0.2, 45, {255, 200, 64}), 1.5, 180, 0, 0.3, 0, 0));
 }
 void kiosk(Scene& s) {
     s.curvature = 0;
-    add_axis_grid(s, 0.5, s.limit_radius, 0.25, kGrid);
-    add_radial_grid(s, 12, s.limit_radius, 0.25, {50, 60, 80});
+    axis_grid(s);
+    std::string unused;
+    add_radial_grid(s, 12, s.limit_radius, 0.25, {50, 60, 80}, unused);
     s.bodies.push_back(place(ship(), 0.5, 30, 90, 0, 90, 0));
     s.bodies.push_back(place(polygon("square", 4, 0.25, 45, {255, 200, 64}), 1.5, 20, 0, 0.12, 110, 10));
     s.bodies.push_back(place(polygon("triangle", 3, 0.25, 90, {64, 220, 120}), 1.8, 140, 0, 0.1, 230, -15));
@@ -113,8 +124,28 @@ void stress(Scene& s, const SceneParams& p) {
 
 }  // namespace
 
-void add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color) {
-    const int n = static_cast<int>(std::floor(scene.limit_radius / spacing + 1e-9));
+namespace {
+// The vertices line() makes for a line of `length` with a vertex every `step`, in double (a
+// grid's values can ask for far more than an int holds).
+double line_vertices(double length, double step, bool both) {
+    const double m = std::ceil(length / step - 1e-9);
+    return both ? 2 * m + 1 : m + 1;
+}
+// Whether `lines` grid lines of `vertices` vertices fit the budget (both counted in double
+// first: they may be beyond any integer type's range).
+bool grid_fits(const Scene& scene, double lines, double vertices, std::string& why) {
+    // (min: far beyond the budget, the exact count does not matter, and the long must not overflow)
+    if (budget_allows(scene, static_cast<long>(std::min(lines, 1e12)), static_cast<long>(std::min(vertices, 1e12)), 2, why))
+        return true;
+    why += " (a larger spacing or step, a shorter length, fewer lines)";
+    return false;
+}
+}  // namespace
+
+bool add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color, std::string& why) {
+    const double half = std::floor(scene.limit_radius / spacing + 1e-9);
+    if (!grid_fits(scene, 2 * (2 * half + 1), line_vertices(length, step, true), why)) return false;
+    const int n = static_cast<int>(half);
     for (int k = -n; k <= n; ++k) {
         const double d = std::fabs(k * spacing);
         char name[32];
@@ -129,9 +160,11 @@ void add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb
         b.r = d, b.theta_deg = k < 0 ? 270 : 90, b.facing_deg = 0;
         scene.bodies.push_back(b);
     }
+    return true;
 }
 
-void add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color) {
+bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color, std::string& why) {
+    if (!grid_fits(scene, lines, line_vertices(length, step, false), why)) return false;
     for (int i = 0; i < lines; ++i) {
         char name[32];
         std::snprintf(name, sizeof name, "radial %g", 360.0 * i / lines);
@@ -139,6 +172,7 @@ void add_radial_grid(Scene& scene, int lines, double length, double step, Rgb co
         b.facing_deg = 360.0 * i / lines;
         scene.bodies.push_back(b);
     }
+    return true;
 }
 
 const char* const* builtin_scene_names() {
@@ -146,9 +180,14 @@ const char* const* builtin_scene_names() {
     return names;
 }
 
-bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out) {
+bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out, std::string* why) {
     out = Scene{};
     out.name = name;
+    std::string over;
+    if (name == "stress" && !budget_allows(out, params.bodies, params.vertices, params.tessellation, over)) {
+        if (why) *why = "the stress scene: " + over;
+        return false;
+    }
     if (name == "kiosk") kiosk(out);
     else if (name == "fig1") fig1(out);
     else if (name == "fig14") orthogonal_motion(out, 0);

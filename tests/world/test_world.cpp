@@ -10,6 +10,7 @@
 #include <string>
 
 #include "geometry/reference.hpp"
+#include "world/budget.hpp"
 #include "world/dump.hpp"
 #include "world/scene_file.hpp"
 #include "world/text_file.hpp"
@@ -299,7 +300,8 @@ TEST(Scenes, Fig16IsThePapersSquareAtNinetyPaperPixels) {
 TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
     Scene s;
     s.limit_radius = kPi;
-    add_axis_grid(s, 1.0, 2.0, 0.5, {1, 2, 3});
+    std::string why;
+    ASSERT_TRUE(add_axis_grid(s, 1.0, 2.0, 0.5, {1, 2, 3}, why)) << why;
     const SceneBody* line = nullptr;
     for (const SceneBody& b : s.bodies)
         if (b.name == "grid x=1") line = &b;
@@ -524,4 +526,62 @@ TEST(InputFiles, OnlyRegularFilesWithinTheLimit) {
     SceneError err;
     EXPECT_FALSE(load_scene_file(fifo, s, err));
     EXPECT_EQ(err.to_string().rfind(fifo + ": the scene file: it is not a regular file", 0), 0u) << err.to_string();
+}
+
+// ---- the world's budget -----------------------------------------------------------------------
+
+// Values each within their range can multiply past what a world may hold: refused with a
+// sentence, before anything is allocated, whatever the product (here up to 4e13 vertices).
+TEST(Budget, GridsAndTheStressSceneOverItAreRefusedBeforeAnythingIsBuilt) {
+    Scene s;
+    s.limit_radius = 1e4;
+    std::string why;
+    EXPECT_FALSE(add_axis_grid(s, 0.01, 1e4, 0.001, {1, 2, 3}, why));
+    EXPECT_TRUE(s.bodies.empty());
+    EXPECT_EQ(why, "it would have 20,000,001 vertices in one body, over the 10,000 a world may have: use fewer vertices "
+                   "(a larger spacing or step, a shorter length, fewer lines)");
+    s.limit_radius = kPi;
+    EXPECT_FALSE(add_radial_grid(s, 360, 10, 0.002, {1, 2, 3}, why));  // 360 lines of 5,001 vertices
+    EXPECT_NE(why.find("1,800,360 vertices, over the 524,288"), std::string::npos) << why;
+    EXPECT_TRUE(s.bodies.empty());
+    // Many lines, each small: the count of bodies.
+    s.limit_radius = 1e4;
+    EXPECT_FALSE(add_axis_grid(s, 0.01, 0.1, 0.05, {1, 2, 3}, why));
+    EXPECT_NE(why.find("4,000,002 bodies, over the 20,000"), std::string::npos) << why;
+    // The stress scene's parameters, each at its documented maximum.
+    Scene stress;
+    EXPECT_FALSE(builtin_scene("stress", {100000, 10000, 256}, stress, &why));
+    EXPECT_EQ(why.rfind("the stress scene: it would have ", 0), 0u) << why;
+    EXPECT_TRUE(stress.bodies.empty());
+    EXPECT_FALSE(builtin_scene("stress", {4000, 200, 8}, stress, &why));  // 800,000 vertices
+    EXPECT_NE(why.find("800,000 vertices"), std::string::npos) << why;
+    // Just within: built, and within_budget agrees.
+    ASSERT_TRUE(builtin_scene("stress", {2000, 64, 8}, stress, &why)) << why;
+    EXPECT_TRUE(within_budget(stress, why)) << why;
+    // Every built-in scene is well within.
+    for (const char* const* n = builtin_scene_names(); *n; ++n) {
+        Scene b;
+        ASSERT_TRUE(builtin_scene(*n, {}, b, &why)) << *n;
+        EXPECT_TRUE(within_budget(b, why)) << *n << ": " << why;
+    }
+}
+
+TEST(Budget, ASceneFileOverItNamesTheGridAndWhatToLower) {
+    Scene s;
+    SceneError err;
+    EXPECT_FALSE(parse_scene("limit_radius = 10000\n[[grid]]\nkind = \"axes\"\nspacing = 0.01\nstep = 0.001\n"
+                             "length = 10000\n",
+                             "big.toml", s, err));
+    EXPECT_EQ(err.to_string(), "big.toml:2:1: grid: it would have 20,000,001 vertices in one body, over the 10,000 a "
+                               "world may have: use fewer vertices (a larger spacing or step, a shorter length, fewer "
+                               "lines)");
+    // Points: few bodies, but each tessellated finely.
+    std::string text = "[[body]]\nname = \"b\"\ntessellation = 256\nvertices = [";
+    for (int i = 0; i < 5000; ++i) text += (i ? ", " : "") + std::string("[0.1, ") + std::to_string(i * 0.072) + "]";
+    text += "]\n";
+    ASSERT_TRUE(parse_scene(text, "fine.toml", s, err)) << err.to_string();
+    std::string why;
+    EXPECT_FALSE(within_budget(s, why));
+    EXPECT_EQ(why, "it would have 1,280,001 points to draw a frame, over the 1,048,576 a world may have: use fewer "
+                   "bodies or vertices, or a lower tessellation");
 }
