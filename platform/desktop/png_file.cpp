@@ -11,32 +11,45 @@
 
 namespace noneuclid::platform {
 
+namespace {
+// libpng's errors and warnings go into our sentence, not to stderr on their own line.
+struct PngMessages {
+    std::string text;
+};
+[[noreturn]] void png_failed(png_structp png, png_const_charp message) {
+    if (auto* m = static_cast<PngMessages*>(png_get_error_ptr(png))) m->text = message ? message : "";
+    png_longjmp(png, 1);
+}
+void png_warned(png_structp, png_const_charp) {}
+}  // namespace
+
 bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error) {
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) {
-        error = "cannot write " + path + ": " + std::strerror(errno) + " (check the directory exists and is writable)";
-        return false;
-    }
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    AtomicFile out;
+    if (!out.open(path, error)) return false;
+    PngMessages messages;
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &messages, png_failed, png_warned);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        error = "cannot write " + path + ": libpng could not start (out of memory?)";
+        error = "cannot write " + path + ": libpng could not start (out of memory?).";
         return false;
     }
     std::vector<png_byte> row(static_cast<std::size_t>(canvas.width()) * 3);
+    bool stopped = false;
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        error = "cannot write " + path + ": libpng failed (disk full?)";
-        return false;
+        const int err = errno;
+        error = "cannot write " + path + ": " +
+                (std::ferror(out.file()) ? std::string(std::strerror(err)) + " (check the disk has room)"
+                                         : "libpng: " + messages.text) +
+                "; it is left as it was.";
+        return false;  // out's destructor removes the temporary file
     }
-    png_init_io(png, f);
+    png_init_io(png, out.file());
     png_set_IHDR(png, info, static_cast<png_uint_32>(canvas.width()), static_cast<png_uint_32>(canvas.height()), 8,
                  PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
-    for (int y = 0; y < canvas.height(); ++y) {
+    for (int y = 0; y < canvas.height() && !stopped; ++y) {
         for (int x = 0; x < canvas.width(); ++x) {
             const render::Rgb c = canvas.get(x, y);
             row[static_cast<std::size_t>(x) * 3] = c.r;
@@ -44,14 +57,17 @@ bool write_png(const std::string& path, const render::Canvas& canvas, std::strin
             row[static_cast<std::size_t>(x) * 3 + 2] = c.b;
         }
         png_write_row(png, row.data());
+        stopped = stop_signal() != 0;
+    }
+    if (stopped) {
+        png_destroy_write_struct(&png, &info);
+        error = "stopped by signal " + std::to_string(stop_signal()) + " while writing " + path +
+                "; it is left as it was.";
+        return false;
     }
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fclose(f) != 0) {
-        error = "cannot write " + path + ": " + std::strerror(errno);
-        return false;
-    }
-    return true;
+    return out.commit(error);
 }
 
 bool read_png(const std::string& path, int& width, int& height, std::string& rgb, std::string& error) {
@@ -60,12 +76,14 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
         error = "cannot read " + path + ": " + std::strerror(errno);
         return false;
     }
-    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    PngMessages messages;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &messages, png_failed, png_warned);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         png_destroy_read_struct(&png, &info, nullptr);
         std::fclose(f);
-        error = "cannot read " + path + ": not a PNG file libpng can read";
+        error = "cannot read " + path + ": not a PNG file libpng can read" +
+                (messages.text.empty() ? std::string() : " (" + messages.text + ")");
         return false;
     }
     png_init_io(png, f);

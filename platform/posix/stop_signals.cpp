@@ -1,6 +1,7 @@
 // SIGINT, SIGTERM, SIGHUP and SIGQUIT as a request to stop (app/platform.hpp): the frame loop
 // finishes the frame, writes the recording's end and the screenshot, and the displays restore
-// what they changed (the console) on the way out.
+// what they changed (the console) on the way out; render and demo leave their files as they
+// were. And SIGXFSZ ignored, so that a file-size limit is an error like a full disk.
 #include <csignal>
 
 #include "app/platform.hpp"
@@ -11,6 +12,8 @@ namespace {
 volatile std::sig_atomic_t g_stop_signal = 0;
 void on_stop(int sig) { g_stop_signal = sig; }
 }  // namespace
+
+void prepare_process() { std::signal(SIGXFSZ, SIG_IGN); }
 
 void catch_stop_signals() {
     struct sigaction stop{};

@@ -30,6 +30,7 @@ int demo_command(int argc, char** argv, int first) {
     std::filesystem::create_directories(dir, ec);
     if (ec) usage_error("cannot create the directory '" + dir + "': " + ec.message() + ".");
     const platform::LoadedFont font = load_font(defaults(Command::render));
+    platform::catch_stop_signals();  // a signal leaves the picture being made as it was
     std::string written;
     for (int i = 0; i < kFigureCount; ++i) {
         const Figure& f = kFigures[i];
@@ -39,8 +40,12 @@ int demo_command(int argc, char** argv, int first) {
         o.width = width > 0 ? width : f.width, o.height = height > 0 ? height : f.height;
         const world::Scene scene = load_scene(o);
         Picture picture;
-        render_picture(o, scene, nullptr, font.font, picture);
         const std::string path = dir + "/" + f.name + ".png";
+        if (render_picture(o, scene, nullptr, font.font, picture).stopped) {
+            std::fprintf(stderr, "noneuclid: stopped by signal %d; %s is left as it was.\n", platform::stop_signal(),
+                         path.c_str());
+            return 1;
+        }
         std::string error;
         if (!platform::write_png(path, picture.canvas, error)) {
             std::fprintf(stderr, "noneuclid: %s\n", error.c_str());

@@ -87,14 +87,18 @@ int run_command(int argc, char** argv, int first) {
         std::fprintf(stderr, "noneuclid: --size is left unused: the kiosk draws at the framebuffer's size, %dx%d.\n",
                      display->canvas().width(), display->canvas().height());
 
+    // The recording goes to a temporary file beside it, renamed over it at the end: a run cut
+    // short by an error leaves no half recording in its place (a stop signal ends the run
+    // normally, and its recording is kept).
+    platform::AtomicFile recording;
     std::FILE* file = nullptr;
     if (!o.record.empty()) {
-        file = std::fopen(o.record.c_str(), "w");
-        if (!file) {
-            std::fprintf(stderr, "noneuclid: cannot write the recording %s (%s): check the directory.\n",
-                         o.record.c_str(), std::strerror(errno));
+        std::string why;
+        if (!recording.open(o.record, why)) {
+            std::fprintf(stderr, "noneuclid: the recording: %s\n", why.c_str());
             return 2;
         }
+        file = recording.file();
     }
     Recorder recorder(file);
     if (file) record_settings(recorder, o, display_name(kind), font, display->canvas().format());
@@ -105,9 +109,9 @@ int run_command(int argc, char** argv, int first) {
     FrameLoop loop(*display, *session, o.actions.empty() ? nullptr : &script, file ? &recorder : nullptr, lo);
     int status = loop.run();
     display.reset();  // the console back before the last lines
-    if (file && (!recorder.ok() || std::fclose(file) != 0)) {
-        std::fprintf(stderr, "noneuclid: could not finish writing the recording %s: check the disk.\n",
-                     o.record.c_str());
+    std::string why;
+    if (file && !recording.commit(why)) {
+        std::fprintf(stderr, "noneuclid: the recording: %s\n", why.c_str());
         status = status ? status : 1;
     }
     return status;

@@ -50,8 +50,14 @@ int render_command(int argc, char** argv, int first) {
     if (o.out.empty()) usage_error("render needs --out FILE.png: where to write the picture.");
     const world::Scene scene = load_scene(o);
     const platform::LoadedFont font = load_font(o);
+    platform::catch_stop_signals();  // a signal leaves --out as it was (render_picture, write_png)
     Picture picture;
     const PictureResult r = render_picture(o, scene, &script, font.font, picture);
+    if (r.stopped) {
+        std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames; %s is left as it was.\n",
+                     platform::stop_signal(), r.frame, o.out.c_str());
+        return 1;
+    }
     std::string error;
     if (!platform::write_png(o.out, picture.canvas, error)) {
         std::fprintf(stderr, "noneuclid: %s\n", error.c_str());

@@ -1,10 +1,12 @@
 // noneuclid: the command line. Each command lives in a file of its own (app/cmd_*.cpp); a bad
 // word anywhere is one sentence on stderr and exit status 2.
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/platform.hpp"
 
 namespace {
 
@@ -35,10 +37,20 @@ int dispatch(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    noneuclid::platform::prepare_process();
+    int status = 0;
     try {
-        return dispatch(argc, argv);
+        status = dispatch(argc, argv);
     } catch (const noneuclid::app::UsageError& e) {
         std::fprintf(stderr, "noneuclid: %s\n", e.message.c_str());
         return 2;
     }
+    // What went to standard output (a report, help, a dump) must have arrived: a full disk or a
+    // closed pipe is one sentence and a non-zero exit, not a silent success.
+    if ((std::fflush(stdout) != 0 || std::ferror(stdout)) && status == 0) {
+        std::fprintf(stderr, "noneuclid: cannot write to standard output (%s): check where it goes.\n",
+                     std::strerror(errno));
+        return 1;
+    }
+    return status;
 }

@@ -1,5 +1,6 @@
 #include "app/picture.hpp"
 
+#include "app/platform.hpp"
 #include "app/setup.hpp"
 
 namespace noneuclid::app {
@@ -28,6 +29,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
     for (long f = 0;; ++f) {
         if (o.timelapse > 0 && f % o.timelapse == 0) s->draw_world(layer, Layers::bodies, false);
         if (f == o.frames) break;
+        if (platform::stop_signal()) return {s->curvature(), s->frame(), true};  // (catch_stop_signals)
         s->step();
         s->play_due(player);
     }
@@ -39,7 +41,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
                 if (layer.get_word(x, y) != bg) out.canvas.set_word(x, y, layer.get_word(x, y));
     }
     s->draw_hud(out.canvas);
-    return {s->curvature(), s->frame()};
+    return {s->curvature(), s->frame(), false};
 }
 
 }  // namespace noneuclid::app

@@ -13,8 +13,9 @@
 namespace noneuclid::app {
 
 struct PictureResult {
-    double K = 0;    // at the last frame
-    long frame = 0;  // steps taken
+    double K = 0;          // at the last frame
+    long frame = 0;        // steps taken
+    bool stopped = false;  // a stop signal came (platform::catch_stop_signals): nothing drawn
 };
 
 // Draws into `out` (allocated here: o.width x o.height in o.format). `script` may be null.

@@ -25,6 +25,9 @@ struct CpuTime {
     double user = 0, system = 0;
 };
 CpuTime cpu_time();
+// At start: a write past the file-size limit (RLIMIT_FSIZE) fails with an error the program
+// reports, instead of SIGXFSZ ending it halfway through a file.
+void prepare_process();
 // From now on SIGINT, SIGTERM, SIGHUP and SIGQUIT ask the program to stop instead of ending it:
 // stop_signal() then says which came (0: none yet), and waits (poll, sleep) end early.
 void catch_stop_signals();
@@ -62,7 +65,31 @@ std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& err
 
 // ---- files ----------------------------------------------------------------------------------
 
-// Writes `canvas` to `path` as an 8-bit RGB PNG. False with one sentence in `error`.
+// A file written whole or not at all (platform/posix/atomic_file.cpp): into a temporary file
+// beside `path`, then flushed, synced to the disk and renamed over `path` by commit(). Until
+// then `path` is untouched; abort(), a failed commit() or the destructor remove the temporary
+// file. A crash leaves at most a hidden temporary file (.NAME.XXXXXX), never a half-written NAME.
+class AtomicFile {
+public:
+    AtomicFile() = default;
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+    ~AtomicFile() { abort(); }
+
+    // False with one sentence in `error` (naming `path`, ending with the fix).
+    bool open(const std::string& path, std::string& error);
+    std::FILE* file() const { return file_; }
+    bool commit(std::string& error);
+    void abort();
+
+private:
+    std::string path_, temp_;
+    std::FILE* file_ = nullptr;
+};
+
+// Writes `canvas` to `path` as an 8-bit RGB PNG, atomically (AtomicFile): a full disk, an
+// error or a stop signal (stop_signal()) while writing leaves `path` as it was. False with one
+// sentence in `error`.
 bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error);
 // Reads an 8-bit RGB or RGBA PNG into `rgb` (3 bytes a pixel, rows packed).
 bool read_png(const std::string& path, int& width, int& height, std::string& rgb, std::string& error);

@@ -1,6 +1,7 @@
 // Writes a recording (app/script.hpp's format) as a run goes: the settings to replay it with
 // first, then every control as it takes effect, with the world time it took effect at. The
-// session calls it; nothing here reads a clock.
+// session calls it; nothing here reads a clock. Write errors show when the file is finished
+// (platform::AtomicFile::commit).
 #pragma once
 
 #include <cstdio>
@@ -17,8 +18,6 @@ public:
     void comment(const std::string& text);
     void setting(const char* key, const std::string& value);
     void event(double time, ScriptEvent::Kind kind, world::Control control = world::Control::thrust);
-    // False once a write has failed (a full disk): the caller says so at the end.
-    bool ok() const { return !f_ || !std::ferror(f_); }
 
 private:
     std::FILE* f_;

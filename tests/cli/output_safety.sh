@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Output is written whole or not at all, and a failed write is one sentence and a non-zero exit:
+#  - standard output on a full disk (/dev/full): dump, accuracy, --help;
+#  - a file-size limit (RLIMIT_FSIZE, as a full disk) while writing a PNG (render, demo, run's
+#    screenshot) or a recording: the existing file is left as it was, no temporary file remains;
+#  - SIGTERM while the world runs, and SIGINT while the PNG is written: the same.
+#   output_safety.sh NONEUCLID
+set -uo pipefail
+noneuclid=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+failures=0
+fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
+pass() { echo "PASS $*"; }
+# expect NAME STATUS STDERR_PART COMMAND...: the exit status and one line naming the problem.
+expect() {
+    local name=$1 want=$2 part=$3 rc=0
+    shift 3
+    "$@" > out.txt 2> err.txt || rc=$?
+    if [ "$rc" != "$want" ]; then fail "$name: exit $rc, not $want: $(cat err.txt)"; return; fi
+    if ! grep -q -- "$part" err.txt; then fail "$name: stderr lacks '$part': $(cat err.txt)"; return; fi
+    pass "$name"
+}
+# intact NAME FILE: FILE is still the good copy, and no temporary file is left beside it.
+intact() {
+    if ! cmp -s "$2" "$2.good"; then fail "$1: $2 was changed"; return; fi
+    if ls -a | grep -q "^\.$2\."; then fail "$1: a temporary file is left: $(ls -a | grep "^\.$2\.")"; return; fi
+    pass "$1: $2 untouched, nothing left behind"
+}
+
+expect "dump --frames 0 > /dev/full" 1 "cannot write the dump to standard output (No space left on device)" \
+    sh -c "\"$noneuclid\" dump --frames 0 > /dev/full"
+expect "dump --frames 1000 > /dev/full" 1 "cannot write the dump to standard output" \
+    sh -c "\"$noneuclid\" dump --frames 1000 > /dev/full"
+expect "accuracy > /dev/full" 1 "cannot write to standard output (No space left on device)" \
+    sh -c "\"$noneuclid\" accuracy --samples 2 --random 0 > /dev/full"
+expect "--help > /dev/full" 1 "cannot write to standard output" sh -c "\"$noneuclid\" --help > /dev/full"
+
+"$noneuclid" render --scene fig14 --frames 10 --out pic.png 2>/dev/null && cp pic.png pic.png.good
+expect "render over the file-size limit" 1 "cannot write pic.png: File too large" \
+    prlimit --fsize=2000 "$noneuclid" render --scene fig1 --out pic.png
+intact "render over the file-size limit" pic.png
+
+"$noneuclid" render --scene stress --frames 100000 --out pic.png 2> err.txt &
+pid=$!
+sleep 1
+kill -TERM "$pid"
+rc=0; wait "$pid" || rc=$?
+if [ "$rc" = 1 ] && grep -q "stopped by signal 15 after .* frames; pic.png is left as it was" err.txt; then
+    pass "SIGTERM while the world runs"
+else
+    fail "SIGTERM while the world runs: exit $rc: $(cat err.txt)"
+fi
+intact "SIGTERM while the world runs" pic.png
+
+# A picture big enough to take seconds to write; the signal comes while it is written.
+"$noneuclid" render --scene fig1 --frames 0 --size 8192x8192 --format rgb565 --out pic.png 2> err.txt &
+pid=$!
+for _ in $(seq 400); do ls -a | grep -q '^\.pic\.png\.' && break; sleep 0.05; done
+kill -INT "$pid"
+rc=0; wait "$pid" || rc=$?
+if [ "$rc" = 1 ] && grep -q "stopped by signal 2 while writing pic.png; it is left as it was" err.txt; then
+    pass "SIGINT while the PNG is written"
+else
+    fail "SIGINT while the PNG is written: exit $rc: $(cat err.txt)"
+fi
+intact "SIGINT while the PNG is written" pic.png
+
+echo "an earlier recording" > rec.txt && cp rec.txt rec.txt.good
+expect "recording over the file-size limit" 1 "the recording: cannot write rec.txt: File too large" \
+    prlimit --fsize=300 "$noneuclid" run --display png --frames 100 --record rec.txt --screenshot shot.png
+intact "recording over the file-size limit" rec.txt
+
+mkdir -p demo && "$noneuclid" demo --out-dir demo > /dev/null 2>&1
+cp demo/kiosk.png kiosk.png.good
+expect "demo over the file-size limit" 1 "cannot write demo/kiosk.png: File too large" \
+    prlimit --fsize=3000 "$noneuclid" demo --out-dir demo
+(cd demo && cp ../kiosk.png.good . && intact "demo over the file-size limit" kiosk.png)
+
+[ "$failures" = 0 ] || { echo "$failures failed" >&2; exit 1; }
