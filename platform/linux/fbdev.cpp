@@ -12,6 +12,8 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "app/platform.hpp"  // monotonic_ns
@@ -81,18 +83,33 @@ bool Fbdev::open(const std::string& path, std::string& error) {
         error = text;
         return false;
     }
-    line_length_ = fix.line_length;
-    xoffset_ = static_cast<int>(var.xoffset);
-    yoffset_ = static_cast<int>(var.yoffset);
-    yres_virtual_ = static_cast<int>(var.yres_virtual);
-    const int w = static_cast<int>(var.xres), h = static_cast<int>(var.yres);
-    const std::size_t need = static_cast<std::size_t>(line_length_) * static_cast<std::size_t>(yoffset_ + h);
-    if (w <= 0 || h <= 0 || line_length_ < static_cast<std::ptrdiff_t>(w) * format_.bytes_per_pixel() || fix.smem_len < need) {
-        error = path + " reports an unusable geometry (" + std::to_string(w) + "x" + std::to_string(h) + ", line " +
-                std::to_string(line_length_) + " bytes, memory " + std::to_string(fix.smem_len) +
-                " bytes): set a mode with fbset, or check the display driver";
+    // Every number the driver reports is checked before it is used: the picture's rows, from
+    // the offsets on, must lie inside the memory that is mapped (a driver reporting an xoffset
+    // past the line, or a memory size too small, would otherwise have the copy write past the
+    // mapping). All in 64 bits: the fields are 32-bit unsigned.
+    const uint64_t w = var.xres, h = var.yres, bpp = static_cast<uint64_t>(format_.bytes_per_pixel());
+    const uint64_t line = fix.line_length, mem = fix.smem_len;
+    const uint64_t row_end = (uint64_t{var.xoffset} + w) * bpp, rows_end = uint64_t{var.yoffset} + h;
+    const char* wrong = w == 0 || h == 0                   ? "an empty mode"
+                        : w > 16384 || h > 16384           ? "a mode larger than 16384 pixels a side"
+                        : line > (uint64_t{1} << 28)       ? "a line length over 256 MiB"
+                        : row_end > line                   ? "rows (with their x offset) longer than a line"
+                        : rows_end * line > mem            ? "rows (with their y offset) past the end of its memory"
+                                                           : nullptr;
+    if (wrong) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "%s (%s) reports %s (%ux%u at offset %u,%u, virtual %ux%u, %u bits per pixel, line %u bytes, "
+                      "memory %u bytes): set a mode with fbset, or check the display driver",
+                      path.c_str(), id_.c_str(), wrong, var.xres, var.yres, var.xoffset, var.yoffset, var.xres_virtual,
+                      var.yres_virtual, var.bits_per_pixel, fix.line_length, fix.smem_len);
+        error = text;
         return false;
     }
+    line_length_ = static_cast<std::ptrdiff_t>(line);
+    xoffset_ = static_cast<int>(var.xoffset);
+    yoffset_ = static_cast<int>(var.yoffset);
+    yres_virtual_ = static_cast<int>(std::min<uint64_t>(var.yres_virtual, mem / line));
     map_len_ = fix.smem_len;
     void* m = mmap(nullptr, map_len_, PROT_READ | PROT_WRITE, MAP_SHARED, fd_, 0);
     if (m == MAP_FAILED) {
@@ -102,7 +119,7 @@ bool Fbdev::open(const std::string& path, std::string& error) {
     }
     map_ = static_cast<uint8_t*>(m);
     // Two pages in the virtual screen and the driver pans: draw to the hidden one.
-    if (yres_virtual_ >= 2 * h && static_cast<std::size_t>(line_length_) * static_cast<std::size_t>(2 * h) <= map_len_) {
+    if (static_cast<uint64_t>(yres_virtual_) >= 2 * h && 2 * h * line <= mem) {
         fb_var_screeninfo pan = var;
         pan.xoffset = 0;
         pan.yoffset = 0;
@@ -110,14 +127,15 @@ bool Fbdev::open(const std::string& path, std::string& error) {
         if (pan_ok_) xoffset_ = yoffset_ = 0;
     }
     ioctl(fd_, FBIOBLANK, FB_BLANK_UNBLANK);  // failure is fine: not every driver blanks
-    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w) * format_.bytes_per_pixel();
+    const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(w * bpp);
     back_pixels_.assign(static_cast<std::size_t>(stride) * static_cast<std::size_t>(h), 0);
-    back_ = render::Canvas(back_pixels_.data(), w, h, stride, format_);
+    back_ = render::Canvas(back_pixels_.data(), static_cast<int>(w), static_cast<int>(h), stride, format_);
     return true;
 }
 
 render::Canvas Fbdev::page(int index) const {
-    uint8_t* base = map_ + (yoffset_ + index * back_.height()) * line_length_ + xoffset_ * format_.bytes_per_pixel();
+    const std::ptrdiff_t row = std::ptrdiff_t{yoffset_} + std::ptrdiff_t{index} * back_.height();
+    uint8_t* base = map_ + row * line_length_ + std::ptrdiff_t{xoffset_} * format_.bytes_per_pixel();
     return render::Canvas(base, back_.width(), back_.height(), line_length_, format_);
 }
 
