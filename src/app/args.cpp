@@ -10,7 +10,9 @@ void usage_error(const std::string& message) { throw UsageError{message}; }
 
 const std::string& Args::value(const std::string& opt) {
     if (!more()) usage_error(opt + " needs a value; see 'noneuclid --help'.");
-    return next();
+    const std::string& v = next();
+    if (v.empty()) usage_error(opt + " needs a value, not an empty word; see 'noneuclid --help'.");
+    return v;
 }
 
 double Args::parse_number(const std::string& opt, const std::string& text, double lo, double hi) {
@@ -35,11 +37,21 @@ long long Args::parse_count(const std::string& opt, const std::string& text, lon
 }
 
 void parse_size(const std::string& opt, const std::string& text, int& width, int& height) {
-    int w = 0, h = 0;
-    char tail = 0;
-    if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 16 || h < 16 || w > 16384 || h > 16384)
+    // Digits only, each side at most five of them: no sign, no space, nothing that overflows.
+    const std::size_t x = text.find('x');
+    auto side = [&](std::size_t from, std::size_t to) -> long {
+        if (to <= from || to - from > 5) return -1;
+        long v = 0;
+        for (std::size_t i = from; i < to; ++i) {
+            if (text[i] < '0' || text[i] > '9') return -1;
+            v = v * 10 + (text[i] - '0');
+        }
+        return v;
+    };
+    const long w = x == std::string::npos ? -1 : side(0, x), h = x == std::string::npos ? -1 : side(x + 1, text.size());
+    if (w < 16 || h < 16 || w > 16384 || h > 16384)
         usage_error(opt + " needs WIDTHxHEIGHT in pixels, 16 to 16384 each (e.g. 800x480), not '" + text + "'.");
-    width = w, height = h;
+    width = static_cast<int>(w), height = static_cast<int>(h);
 }
 
 geo::Projection parse_projection(const std::string& opt, const std::string& text) {

@@ -21,6 +21,7 @@ int dispatch(int argc, char** argv) {
         }
     }
     if (word == "--version") {
+        if (argc > 2) usage_error("--version takes nothing after it, not '" + std::string(argv[2]) + "'.");
         std::printf("noneuclid %s\n", version());
         return 0;
     }
