@@ -9,7 +9,9 @@
 // has holes, upstream issue 295, fixed after 3.4.0), a lone carriage return after `[[` or `[`
 // (an assertion in parse_key), a non-ASCII character after a line-ending backslash (issue
 // 190). So toml_guard() reads the text first and refuses, with its place, what TOML does not
-// allow anyway and what reaches those paths; toml++ never sees such a text. Messages quote
+// allow anyway and what reaches those paths; toml++ never sees such a text.
+// (tests/world/test_hostile.cpp has inputs for each rule; tests/fuzz/regressions/ keeps those
+// the fuzzers found, replayed by the normal suite.) Messages quote
 // file content through world/quote.hpp, toml++'s own descriptions included.
 #pragma once
 
@@ -51,11 +53,18 @@ inline const char* type_name(const toml::node& n) {
 
 // Checks `text` before toml++ parses it (see the top of this file). Refuses, with the place
 // (line and column, 1-based, columns in characters as toml++ counts them) and one sentence
-// beginning "not valid TOML: ": bytes that are not UTF-8; control characters but tab and line
-// ends (a carriage return only before a line feed), anywhere; a non-ASCII character outside a
-// quoted string or a comment; a non-ASCII character right after a backslash and whitespace in a
-// basic string (a line-ending backslash). TOML 1.0 allows none of these but the last, whose
-// character can be written as an escape instead. Returns true when the text may be parsed.
+// beginning "not valid TOML: ":
+//  - bytes that are not UTF-8; control characters but tab and line ends (a carriage return
+//    only before a line feed), anywhere;
+//  - a non-ASCII character outside a quoted string or a comment (a quote counts as the start of
+//    a string only where a key or a value may begin: after '=', '[', '{', ',', '.' or at the
+//    start of a line; elsewhere toml++ reads it as part of a bad token);
+//  - a table header whose name does not begin with a key's character or a quote (`[*]`);
+//  - a ']' or '}' that does not match the innermost open array or inline table;
+//  - a non-ASCII character right after a backslash and whitespace in a basic string (a
+//    line-ending backslash).
+// TOML 1.0 allows none of these but the last, whose character can be written as an escape
+// instead. Returns true when the text may be parsed.
 bool toml_guard(std::string_view text, long& line, long& column, std::string& message);
 
 class Reader {

@@ -101,6 +101,35 @@ const Hostile kHostile[] = {
     {"[\r", 1, 2, "a carriage return (\\x0d) not followed by a line feed"},
     {"[[\r", 1, 3, "a carriage return"},
     {"a = 1\r", 1, 6, "a carriage return"},
+    // A table header whose name does not start with a key's character (found by fuzz_scene).
+    {"[*[", 1, 1, "expected a table's name after '[', found '*'"},
+    {"[[#rid]]\nkind = \"axes\"\n", 1, 1, "expected a table's name after '[[', found '#'"},
+    {"[\n", 1, 1, "expected a table's name after '[', found the end of the line"},
+    {"a = 1\n  [\r\n", 2, 3, "expected a table's name after '[', found the end of the line"},
+    {"[[ [a]]\n", 1, 1, "expected a table's name after '[[', found '['"},
+    {"[ =", 1, 1, "expected a table's name after '[', found '='"},
+    {"[a] [Ж]\n", 1, 5, "expected a table's name after '[', found 'Ж'"},
+    {"[[", 1, 1, "expected a table's name after '[[', found the end of the file"},
+    // A quote inside a bad token does not start a string: toml++ reads the token on (fuzz_board).
+    {"s =+~achipn\"proj\xcc\xaa", 1, 17, "(U+032A) outside quotes"},
+    {"Ysname  =+z\"\xef\xba\xbf\"\\U= ]\naccut", 1, 13, "(U+FEBF) outside quotes"},
+    // A backslash before a non-ASCII character in a basic string (fuzz_board).
+    {"\"\"\"gpiz]\n\\\xd0\x96\"]", 2, 2, "the character 'Ж' (U+0416) after a backslash"},
+    {"s = \"a\\\xc2\xa7\"", 1, 8, "the character '§' (U+00A7) after a backslash"},
+    // A date without a time after its separator (fuzz_scene, and by hand).
+    {"s =1979-05-27Tfacin:00Z", 1, 4, "expected a date and a time (YYYY-MM-DDTHH:MM:SS), found '1979-05-27T'"},
+    {"s = 1979-05-27tz:", 1, 5, "found '1979-05-27t'"},
+    {"s = 1979-05-27 1\n", 1, 5, "found '1979-05-27 1'"},
+    {"s = [1979-05-27 1]\n", 1, 6, "found '1979-05-27 1'"},
+    {"s = [\n 1, 1979-05-27 1,\n]", 2, 5, "found '1979-05-27 1'"},
+    {"e = 1979-02-PH 9 1979-02,P]litcacing2\n", 1, 5, "found '1979-02-PH 9'"},
+    {"s = 1979-05-R_s 2 =0= +\\+ ", 1, 5, "found '1979-05-R_s 2'"},
+    // Brackets inside a bad token are not an array's or a table's (fuzz_board, fuzz_scene).
+    {"sn= [[-Y[\"\xcf\xbb:bn=s7:3", 1, 11, "(U+03FB) outside quotes"},
+    {"s =0x000000000v08{{\"hi\xc2\xb0] from", 1, 23, "(U+00B0) outside quotes"},
+    // A '}' where an array expects a value: an assertion in toml++ (fuzz_world).
+    {"a = [[1], }\n", 1, 11, "'}' closes an array, which ']' closes"},
+    {"a = {b = [1]]\n", 1, 13, "']' closes an inline table, which '}' closes"},
     {"\xcc\xaa", 1, 1, "(U+032A) outside quotes"},            // upstream issue 295's input
     {"# ok\n、 = 1\n", 2, 1, "(U+3001) outside quotes"},      // CJK punctuation
     {"a = 1 \xe3\x80\x80\n", 1, 7, "(U+3000) outside quotes"},  // ideographic space
@@ -149,17 +178,28 @@ TEST(HostileToml, TomlThatIsFineStillLoads) {
         "vertices = [[0.2, 0.0]] # ''' \"\"\" é\n"
         "[[body]]\n"
         "name = '''é\n'l' ''\"'''\n"
-        "vertices = [[0.2, 0.0]]\n";
+        "vertices = [\n  [0.2, 0.0], # a comment [*\n  [0.3, 90.0],\n]\n"
+        "[[ grid ]]\n"
+        "kind = \"radial\"\n"
+        "1979-05-27tz = 1979-05-27T07:32:00Z\n"  // a bare key may look like a date
+        "a = [1979-05-27, 1979-05-27 07:32:00, 07:32:00]\n"
+        "[ \"grid\" . \"\" ]\n"  // not a scene's key: refused by the scene's reader, not by the guard
+        ;
     world::Scene s;
     world::SceneError e;
-    ASSERT_TRUE(world::parse_scene(text, "fine.toml", s, e)) << e.to_string();
+    ASSERT_FALSE(world::parse_scene(text, "fine.toml", s, e));
+    // Refused by the scene's reader (no such keys in a grid), not by the guard or toml++.
+    EXPECT_NE(e.to_string().find(": grid: unknown key '"), std::string::npos) << e.to_string();
+    ASSERT_TRUE(world::parse_scene(text.substr(0, text.rfind("1979-05-27tz")), "fine.toml", s, e)) << e.to_string();
     EXPECT_EQ(s.curvature, 0.5);
-    ASSERT_EQ(s.bodies.size(), 3u);
-    EXPECT_EQ(s.bodies[0].name, "κ-ship \"Ж\" 'x' # not a comment");
-    EXPECT_EQ(s.bodies[1].name, "line continued \"quoted\" été");
-    EXPECT_EQ(s.bodies[1].color, (world::Rgb{0, 255, 0}));
-    EXPECT_EQ(s.bodies[2].name, "é\n'l' ''\"");
-    EXPECT_EQ(s.bodies[0].vertices.size(), 3u);
+    ASSERT_EQ(s.bodies.size(), 12u + 3u);  // the radial grid's lines, then the bodies
+    const world::SceneBody* b = &s.bodies[12];
+    EXPECT_EQ(b[0].name, "κ-ship \"Ж\" 'x' # not a comment");
+    EXPECT_EQ(b[0].vertices.size(), 3u);
+    EXPECT_EQ(b[1].name, "line continued \"quoted\" été");
+    EXPECT_EQ(b[1].color, (world::Rgb{0, 255, 0}));
+    EXPECT_EQ(b[2].name, "é\n'l' ''\"");
+    EXPECT_EQ(b[2].vertices.size(), 2u);
 }
 
 // ---- file content in messages ----------------------------------------------------------------
