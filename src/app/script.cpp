@@ -5,11 +5,15 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "world/quote.hpp"
 #include "world/text_file.hpp"
 
 namespace noneuclid::app {
 
 namespace {
+// The longest setting value: a path's (PATH_MAX).
+constexpr std::size_t kSettingLimit = 4096;
+
 const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size", "format", "aa",
                                     "hud",   "font",      "legend", "frames",     nullptr};
 
@@ -39,7 +43,7 @@ std::string control_list() {
 const char* const* setting_keys() { return kSettingKeys; }
 
 std::string ScriptError::to_string() const {
-    std::string s = file;
+    std::string s = world::printable(file, world::kPathLimit);
     if (line > 0) s.append(1, ':').append(std::to_string(line));
     return s.append(": ").append(message);
 }
@@ -47,7 +51,9 @@ std::string ScriptError::to_string() const {
 bool parse_script(const std::string& text, const std::string& file, Script& out, ScriptError& error) {
     out = Script{};
     out.file = file;
-    std::istringstream in(text);
+    using world::quote;
+    // A UTF-8 byte-order mark (an editor's) before the first line is not part of it.
+    std::istringstream in(text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? text.substr(3) : text);
     std::string raw;
     long line = 0;
     auto fail = [&](const std::string& m) {
@@ -63,6 +69,14 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
         if (is_setting(first)) {
             const std::string value = trim(content.substr(first.size()));
             if (value.empty()) return fail("the setting '" + first + "' needs a value");
+            // The value becomes an option's (and may be shown in its message, or written back
+            // into a recording's line): text a terminal shows as it is, of a path's length.
+            if (value.size() > kSettingLimit)
+                return fail("the setting '" + first + "' is " + std::to_string(value.size()) + " bytes long, over the " +
+                            std::to_string(kSettingLimit) + " a value may have: " + quote(value));
+            if (!world::is_plain(value))
+                return fail("the setting '" + first + "' has a control character or a byte that is not UTF-8: " +
+                            quote(value));
             out.settings.push_back({first, value, line});
             continue;
         }
@@ -71,8 +85,8 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
         if (*end != '\0' || !std::isfinite(time) || time < 0) {
             std::string keys;
             for (const char* const* k = kSettingKeys; *k; ++k) keys += std::string(keys.empty() ? "" : ", ") + *k;
-            return fail("expected a time in seconds (a number >= 0) or a setting (" + keys + ") first, found '" + first +
-                        "'");
+            return fail("expected a time in seconds (a number >= 0) or a setting (" + keys + ") first, found " +
+                        quote(first));
         }
         std::string kind, what, extra;
         words >> kind >> what;
@@ -81,16 +95,16 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
         if (kind == "attract") {
             if (what == "on") e.kind = ScriptEvent::attract_on;
             else if (what == "off") e.kind = ScriptEvent::attract_off;
-            else return fail("expected on or off after 'attract', found '" + what + "'");
+            else return fail("expected on or off after 'attract', found " + quote(what));
         } else {
             if (kind == "press") e.kind = ScriptEvent::press;
             else if (kind == "release") e.kind = ScriptEvent::release;
             else if (kind == "tap") e.kind = ScriptEvent::tap;
-            else return fail("expected press, release, tap or attract after the time, found '" + kind + "'");
+            else return fail("expected press, release, tap or attract after the time, found " + quote(kind));
             if (!world::parse_control(what, e.control) || e.control == world::Control::quit)
-                return fail("expected a control (" + control_list() + "), found '" + what + "'");
+                return fail("expected a control (" + control_list() + "), found " + quote(what));
         }
-        if (words >> extra) return fail("unexpected '" + extra + "' after '" + what + "'");
+        if (words >> extra) return fail("unexpected " + quote(extra) + " after " + quote(what));
         out.events.push_back(e);
     }
     std::stable_sort(out.events.begin(), out.events.end(),

@@ -1,13 +1,14 @@
 #include "world/board.hpp"
 
 #include "geometry/geometry.hpp"
+#include "world/quote.hpp"
 #include "world/text_file.hpp"
 #include "world/toml_reader.hpp"
 
 namespace noneuclid::world {
 namespace {
 
-using tomlr::Bad, tomlr::Reader, tomlr::quote, tomlr::tables, tomlr::type_name;
+using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 
 const toml::table* section(const toml::table& root, const char* key) {
     const toml::node* n = root.get(key);
@@ -20,13 +21,17 @@ std::vector<std::string> strings(const toml::table& t, const char* key, const st
     std::vector<std::string> out;
     const toml::node* n = t.get(key);
     if (!n) return out;
-    if (auto s = n->as_string()) return {s->get()};
+    auto plain = [&](const toml::node& e, const std::string& v) {
+        if (!is_plain(v)) throw Bad{e.source(), context + "expected " + quote(key) + " without control characters, found " + quote(v)};
+        return v;
+    };
+    if (auto s = n->as_string()) return {plain(*n, s->get())};
     const toml::array* a = n->as_array();
     if (!a) throw Bad{n->source(), context + "expected a string or a list of strings for " + quote(key) + ", found " + type_name(*n)};
     for (const toml::node& e : *a) {
         auto s = e.as_string();
         if (!s) throw Bad{e.source(), context + "expected strings in " + quote(key) + ", found " + type_name(e)};
-        out.push_back(s->get());
+        out.push_back(plain(e, s->get()));
     }
     return out;
 }
@@ -34,22 +39,22 @@ std::vector<std::string> strings(const toml::table& t, const char* key, const st
 void read_board(const toml::table& root, Board& b) {
     const Reader r(root, "");
     r.only({"name", "models", "display", "gpio", "evdev", "attract", "button"});
-    b.name = r.string("name", b.name);
+    b.name = r.plain_string("name", b.name);
     b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
         d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "threads"});
-        b.device = d.string("device", b.device);
+        b.device = d.plain_string("device", b.device);
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
-        b.scene = d.string("scene", b.scene);
+        b.scene = d.plain_string("scene", b.scene);
         b.engine = d.string("engine", b.engine);
         if (b.engine != "fixed" && b.engine != "double" && b.engine != "float")
-            throw Bad{t->get("engine")->source(), "display: expected engine = \"fixed\", \"double\" or \"float\", found \"" + b.engine + "\""};
+            throw Bad{t->get("engine")->source(), "display: expected engine = \"fixed\", \"double\" or \"float\", found \"" + printable(b.engine) + "\""};
         b.projection = d.string("projection", b.projection);
         bool known = false;
         for (geo::Projection pr : geo::kProjections) known = known || b.projection == geo::projection_name(pr);
         if (!known)
-            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + b.projection + "\""};
+            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + printable(b.projection) + "\""};
         b.antialias = d.boolean("antialias", b.antialias);
         b.hud = d.boolean("hud", b.hud);
         b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));
@@ -63,7 +68,7 @@ void read_board(const toml::table& root, Board& b) {
     if (const toml::table* t = section(root, "evdev")) {
         const Reader e(*t, "evdev: ");
         e.only({"device", "grab"});
-        b.evdev_device = e.string("device", b.evdev_device);
+        b.evdev_device = e.plain_string("device", b.evdev_device);
         b.grab = e.boolean("grab", b.grab);
     }
     if (const toml::table* t = section(root, "attract")) {
@@ -82,7 +87,7 @@ void read_board(const toml::table& root, Board& b) {
             BoardButton bb;
             const std::string action = br.string("action", "");
             if (!parse_control(action, bb.control))
-                throw Bad{a->source(), "button: unknown action \"" + action + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
+                throw Bad{a->source(), "button: unknown action \"" + printable(action) + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
             const Reader named(t, "button " + quote(action) + ": ");
             bb.gpio = static_cast<int>(named.integer("gpio", -1, 0, 1023, "line offset on the GPIO chip, the BCM number on a Raspberry Pi"));
             bb.pin = static_cast<int>(named.integer("pin", 0, 1, 40, "physical pin on the 40-pin header"));

@@ -2,13 +2,14 @@
 
 #include <sstream>
 
+#include "world/quote.hpp"
 #include "world/text_file.hpp"
 #include "world/toml_reader.hpp"
 
 namespace noneuclid::world {
 namespace {
 
-using tomlr::Bad, tomlr::Reader, tomlr::quote, tomlr::tables, tomlr::type_name;
+using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 
 void read_body(const toml::table& t, int index, Scene& scene) {
     SceneBody b;
@@ -63,7 +64,7 @@ void read_grid(const toml::table& t, Scene& scene) {
         if (!add_radial_grid(scene, static_cast<int>(r.integer("lines", 12, 1, 360, "lines")), length, step, color, why))
             throw Bad{t.source(), "grid: " + why};
     } else {
-        throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + kind + "\""};
+        throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + printable(kind) + "\""};
     }
 }
 
@@ -94,7 +95,7 @@ void read_scene(const toml::table& root, Scene& s) {
 
 std::string SceneError::to_string() const {
     std::ostringstream o;
-    o << file;
+    o << printable(file, kPathLimit);
     if (line > 0) o << ':' << line << ':' << column;
     o << ": " << message;
     return o.str();

@@ -1,6 +1,18 @@
 // The strict TOML reading shared by scene files and board files (toml++): every key must be
 // known, every value has a type and a range, and every error carries its place in the file.
 // Internal to src/world's .cpp files (they link toml++ privately).
+//
+// toml++ 3.3.0 (Debian 12) and 3.4.0 (the newest in any Debian suite: trixie, sid) abort in
+// their own assertions, or reach __builtin_unreachable (undefined behaviour; with assertions
+// off, as in a release build, they become assumptions), on ordinary text: any non-ASCII
+// character outside quotes (`κ = 0.5`, `x = Ж`, `curvature = 0.5 ¡`: its whitespace table
+// has holes, upstream issue 295, fixed after 3.4.0), a lone carriage return after `[[` or `[`
+// (an assertion in parse_key), a non-ASCII character after a line-ending backslash (issue
+// 190). So toml_guard() reads the text first and refuses, with its place, what TOML does not
+// allow anyway and what reaches those paths; toml++ never sees such a text.
+// (tests/world/test_hostile.cpp has inputs for each rule; tests/fuzz/regressions/ keeps those
+// the fuzzers found, replayed by the normal suite.) Messages quote
+// file content through world/quote.hpp, toml++'s own descriptions included.
 #pragma once
 
 #include <algorithm>
@@ -9,9 +21,10 @@
 #include <initializer_list>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <toml++/toml.h>
 
-
+#include "world/quote.hpp"
 #include "world/scene.hpp"  // Rgb
 #include "world/scene_file.hpp"  // SceneError
 
@@ -38,12 +51,21 @@ inline const char* type_name(const toml::node& n) {
     }
 }
 
-inline std::string quote(std::string_view s) {
-    std::string q;  // (built with append: GCC 12 warns falsely on "'" + std::string(s))
-    q.reserve(s.size() + 2);
-    q.append(1, '\'').append(s).append(1, '\'');
-    return q;
-}
+// Checks `text` before toml++ parses it (see the top of this file). Refuses, with the place
+// (line and column, 1-based, columns in characters as toml++ counts them) and one sentence
+// beginning "not valid TOML: ":
+//  - bytes that are not UTF-8; control characters but tab and line ends (a carriage return
+//    only before a line feed), anywhere;
+//  - a non-ASCII character outside a quoted string or a comment (a quote counts as the start of
+//    a string only where a key or a value may begin: after '=', '[', '{', ',', '.' or at the
+//    start of a line; elsewhere toml++ reads it as part of a bad token);
+//  - a table header whose name does not begin with a key's character or a quote (`[*]`);
+//  - a ']' or '}' that does not match the innermost open array or inline table;
+//  - a non-ASCII character right after a backslash and whitespace in a basic string (a
+//    line-ending backslash).
+// TOML 1.0 allows none of these but the last, whose character can be written as an escape
+// instead. Returns true when the text may be parsed.
+bool toml_guard(std::string_view text, long& line, long& column, std::string& message);
 
 class Reader {
 public:
@@ -94,6 +116,16 @@ public:
         if (auto s = n->as_string()) return s->get();
         throw Bad{n->source(), context_ + "expected a string for " + quote(key) + ", found " + type_name(*n)};
     }
+    // A string that is shown or used as it is (a device path, a chip label, a scene's path): no
+    // control characters in it (world::is_plain).
+    std::string plain_string(const char* key, const std::string& fallback) const {
+        std::string v = string(key, fallback);
+        if (!is_plain(v)) throw Bad{t_.get(key)->source(), not_plain(key, v)};
+        return v;
+    }
+    std::string not_plain(const std::string& key, const std::string& v) const {
+        return context_ + "expected " + quote(key) + " without control characters, found " + quote(v);
+    }
     long integer(const char* key, long fallback, long lo, long hi, const char* what) const {
         const toml::node* n = t_.get(key);
         if (!n) return fallback;
@@ -126,7 +158,7 @@ public:
         auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
         if (!s || v.size() != 7 || v[0] != '#' || !std::all_of(v.begin() + 1, v.end(), hex))
             throw Bad{n->source(), context_ + "expected a colour \"#rrggbb\" for " + quote(key) + ", found " +
-                                       (s ? "\"" + v + "\"" : std::string(type_name(*n)))};
+                                       (s ? "\"" + printable(v) + "\"" : std::string(type_name(*n)))};
         const unsigned long x = std::stoul(v.substr(1), nullptr, 16);
         return {static_cast<uint8_t>(x >> 16), static_cast<uint8_t>(x >> 8), static_cast<uint8_t>(x)};
     }
@@ -151,13 +183,18 @@ inline const toml::array* tables(const toml::table& root, const char* key) {
 // `read` becomes `error` (file:line:column: message). Returns true on success.
 template <class Read>
 bool parse_toml(const std::string& text, const std::string& name, SceneError& error, Read&& read) {
+    if (!toml_guard(text, error.line, error.column, error.message)) {
+        error.file = name;
+        return false;
+    }
     try {
-        const toml::table root = toml::parse(text, name);
+        const toml::table root = toml::parse(text, std::string(name));
         read(root);
         return true;
     } catch (const toml::parse_error& e) {
+        // Its description may name a key or show a character of the file: quoted like ours.
         error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
-                 "not valid TOML: " + std::string(e.description())};
+                 "not valid TOML: " + printable(e.description(), kSentenceLimit, false)};
     } catch (const Bad& b) {
         error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
     }

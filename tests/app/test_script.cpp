@@ -4,6 +4,8 @@
 
 #include <string>
 
+using namespace std::string_literals;
+
 #include "app/options.hpp"
 #include "app/script.hpp"
 
@@ -74,6 +76,65 @@ TEST(Script, ErrorsNameTheLineAndWhatWasExpected) {
     ScriptError err;
     EXPECT_FALSE(app::load_script("/nonexistent/actions.txt", s, err));
     EXPECT_NE(err.to_string().find("cannot read"), std::string::npos);
+}
+
+// An editor's UTF-8 byte-order mark before the first line, as scene files allow it.
+TEST(Script, AByteOrderMarkBeforeTheFirstLineIsAccepted) {
+    Script s;
+    ScriptError err;
+    ASSERT_TRUE(app::parse_script("\xEF\xBB\xBFscene kiosk\r\n0.5 press thrust\r\n", "bom.txt", s, err)) << err.to_string();
+    ASSERT_EQ(s.settings.size(), 1u);
+    EXPECT_EQ(s.settings[0].key, "scene");
+    EXPECT_EQ(s.settings[0].value, "kiosk");
+    ASSERT_EQ(s.events.size(), 1u);
+    EXPECT_EQ(s.events[0].time, 0.5);
+    ASSERT_TRUE(app::parse_script("\xEF\xBB\xBF" "1 tap preset\n", "bom.txt", s, err)) << err.to_string();
+    EXPECT_EQ(s.events.size(), 1u);
+    // Only at the start: elsewhere it is a bad token like any other, and shown escaped.
+    ASSERT_FALSE(app::parse_script("0 press thrust\n\xEF\xBB\xBF" "1 tap preset\n", "bom.txt", s, err));
+    EXPECT_EQ(err.to_string(), "bom.txt:2: expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
+                               "projection, size, format, aa, hud, font, legend, frames) first, found '\\ufeff1'");
+}
+
+// What the file holds reaches the message escaped (world/quote.hpp) and cut to 60 characters.
+TEST(Script, FileContentInMessagesIsQuoted) {
+    struct Case {
+        std::string text;
+        std::string message;  // the whole sentence after "q.txt:1: "
+    };
+    const std::string mib(1 << 20, 'w');
+    const Case cases[] = {
+        {"1 press \x1b[2Jwarp\n", "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
+                                  "hyperbolic, flat, spherical, projection, hud), found '\\x1b[2Jwarp'"},
+        {"1 press w\0arp now\n"s, "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
+                                  "hyperbolic, flat, spherical, projection, hud), found 'w\\x00arp'"},
+        {"1 \x9b\xff thrust\n", "expected press, release, tap or attract after the time, found '\\x9b\\xff'"},
+        {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
+        {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},
+        {mib + " press thrust\n", "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
+                                  "projection, size, format, aa, hud, font, legend, frames) first, found '" +
+                                      std::string(59, 'w') + "…'"},
+        {"scene a\x1b]0;x\x07" "b\n", "the setting 'scene' has a control character or a byte that is not UTF-8: "
+                                  "'a\\x1b]0;x\\x07b'"},
+        {"font \xff.psf\n", "the setting 'font' has a control character or a byte that is not UTF-8: '\\xff.psf'"},
+        {"scene " + mib + "\n", "the setting 'scene' is 1048576 bytes long, over the 4096 a value may have: '" +
+                                     std::string(59, 'w') + "…'"},
+    };
+    for (const Case& c : cases) {
+        Script s;
+        ScriptError err;
+        ASSERT_FALSE(app::parse_script(c.text, "q.txt", s, err)) << c.text.substr(0, 80);
+        EXPECT_EQ(err.to_string(), "q.txt:1: " + c.message);
+    }
+    // A path of PATH_MAX bytes is still a setting.
+    Script s;
+    ScriptError err;
+    const std::string path = "/" + std::string(4095, 'p');
+    ASSERT_TRUE(app::parse_script("scene " + path + "\n", "q.txt", s, err)) << err.to_string().substr(0, 200);
+    EXPECT_EQ(s.settings.at(0).value, path);
+    // The file's own name, which came from the command line, is shown escaped too.
+    EXPECT_FALSE(app::load_script("/nonexistent/\x1b[2J.txt", s, err));
+    EXPECT_EQ(err.to_string().rfind("/nonexistent/\\x1b[2J.txt: the actions file: cannot read it", 0), 0u) << err.to_string();
 }
 
 TEST(Script, ThePlayerGivesEventsWhenDue) {

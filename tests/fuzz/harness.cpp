@@ -1,0 +1,227 @@
+#include "harness.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <toml++/toml.h>
+
+#include "app/script.hpp"
+#include "fixed/fixed.hpp"
+#include "world/board.hpp"
+#include "world/controls.hpp"
+#include "world/dump.hpp"
+#include "world/quote.hpp"
+#include "world/scene_file.hpp"
+#include "world/toml_reader.hpp"
+#include "world/world.hpp"
+
+namespace noneuclid::fuzz {
+
+namespace {
+
+[[noreturn]] void broken(const char* what, const std::string& detail) {
+    std::fprintf(stderr, "fuzz harness: %s: %s\n", what, world::printable(detail, 400).c_str());
+    std::abort();
+}
+#define FUZZ_CHECK(cond, detail) \
+    do {                         \
+        if (!(cond)) broken(#cond, detail); \
+    } while (0)
+
+// One sentence a terminal shows as it is, of a bounded length, naming `file` and, for `place`,
+// a line (and a column) from 1.
+void check_sentence(const std::string& s, const std::string& file, long line, long column, bool place) {
+    FUZZ_CHECK(world::is_plain(s), s);
+    FUZZ_CHECK(s.size() <= 2000, s);
+    FUZZ_CHECK(s.rfind(file + ":", 0) == 0, s);
+    if (place) {
+        FUZZ_CHECK(line >= 1, s);
+        FUZZ_CHECK(column >= 1, s);
+        FUZZ_CHECK(s.rfind(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ", 0) == 0, s);
+    }
+}
+
+bool in(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
+
+// The vertices the scene's [[grid]] tables would add (world::add_axis_grid, add_radial_grid),
+// estimated from the TOML before world::parse_scene builds them. Values it cannot read are
+// left to the parser, which refuses them before building that grid.
+double grid_vertices(std::string_view text) {
+    long line = 0, column = 0;
+    std::string why;
+    if (!world::tomlr::toml_guard(text, line, column, why)) return 0;  // refused before toml++
+    toml::table root;
+    try {
+        root = toml::parse(text, std::string("estimate"));
+    } catch (const toml::parse_error&) {
+        return 0;
+    }
+    auto number = [](const toml::node* n, double fallback) {
+        if (!n) return fallback;
+        if (auto f = n->as_floating_point()) return f->get();
+        if (auto i = n->as_integer()) return static_cast<double>(i->get());
+        return std::nan("");
+    };
+    const double R = number(root.get("limit_radius"), 3.14159265358979323846);
+    if (!in(R, 1e-3, 1e4)) return 0;
+    const toml::array* grids = root.get("grid") ? root.get("grid")->as_array() : nullptr;
+    if (!grids) return 0;
+    double total = 0;
+    for (const toml::node& g : *grids) {
+        const toml::table* t = g.as_table();
+        if (!t) break;
+        const double length = number(t->get("length"), R), step = number(t->get("step"), 0.25);
+        if (!in(length, 0.01, 1e4) || !in(step, 0.001, 1e4)) break;
+        const double per_line = std::ceil(length / step) + 1;
+        const toml::node* kind = t->get("kind");
+        const bool radial = kind && kind->as_string() && kind->as_string()->get() == "radial";
+        if (radial) {
+            const double lines = number(t->get("lines"), 12);
+            if (!in(lines, 1, 360)) break;
+            total += lines * per_line;
+        } else {
+            const double spacing = number(t->get("spacing"), 0.5);
+            if (!in(spacing, 0.01, 1e4)) break;
+            total += 2 * (2 * std::floor(R / spacing) + 1) * (2 * per_line);
+        }
+    }
+    return total;
+}
+
+std::atomic<long> g_non_finite{0};
+
+bool finite_world(const auto& w) {
+    using T = typename std::remove_cvref_t<decltype(w)>::scalar;
+    auto ok = [](T v) { return std::isfinite(static_cast<double>(v)); };
+    if (!ok(w.K)) return false;
+    std::vector<geo::Polar<T>> v;
+    for (const auto& b : w.bodies) {
+        if (!ok(b.centre.r) || !ok(b.centre.theta) || !ok(b.facing) || !ok(b.speed) || !ok(b.travel)) return false;
+        v.resize(b.local.size());
+        w.vertices(b, v.data());
+        for (const auto& p : v)
+            if (!ok(p.r) || !ok(p.theta)) return false;
+    }
+    return true;
+}
+
+// Steps `w` `frames` frames with the script's events, then dumps its last frame.
+template <class W>
+std::string run_world(W& w, const app::Script& script, int frames, geo::Projection projection) {
+    using T = typename W::scalar;
+    app::ScriptPlayer player(script.events);
+    const T dt = T(1.0 / 60);
+    for (int f = 0; f < frames; ++f) {
+        while (const app::ScriptEvent* e = player.next_due(w.time)) {
+            world::Action a{};
+            if (e->kind == app::ScriptEvent::attract_on || e->kind == app::ScriptEvent::attract_off) continue;
+            if (!world::control_action(e->control, a)) continue;  // the view's: projection, hud
+            if (e->kind == app::ScriptEvent::press || e->kind == app::ScriptEvent::tap) w.press(a);
+            if (e->kind == app::ScriptEvent::release || e->kind == app::ScriptEvent::tap) w.release(a);
+        }
+        w.step(dt);
+    }
+    world::DumpOptions o;
+    o.projection = projection;
+    std::string line;
+    world::dump_frame(w, o, line);
+    FUZZ_CHECK(!line.empty() && line.back() == '\n' && line.find('\n') == line.size() - 1, line);
+    return line;
+}
+
+}  // namespace
+
+long non_finite_skipped() { return g_non_finite.load(); }
+
+void scene(std::string_view input) {
+    if (grid_vertices(input) > kMaxVertices) return;
+    const std::string text(input);
+    world::Scene s;
+    world::SceneError e;
+    if (!world::parse_scene(text, "f.toml", s, e)) {
+        check_sentence(e.to_string(), "f.toml", e.line, e.column, true);
+        return;
+    }
+    FUZZ_CHECK(in(s.curvature, -1, 1), std::to_string(s.curvature));
+    FUZZ_CHECK(in(s.limit_radius, 1e-3, 1e4), std::to_string(s.limit_radius));
+    FUZZ_CHECK(!s.presets.empty(), "no presets");
+    for (double p : s.presets) FUZZ_CHECK(in(p, -1, 1), std::to_string(p));
+    for (const world::SceneBody& b : s.bodies) {
+        FUZZ_CHECK(!b.vertices.empty(), b.name);
+        FUZZ_CHECK(b.tessellation >= 1 && b.tessellation <= 256, b.name);
+        FUZZ_CHECK(in(b.r, 0, 1e4) && in(b.speed, 0, 1e3) && in(b.accel, 0, 1e3), b.name);
+        for (const auto& v : b.vertices) FUZZ_CHECK(in(v.rho, 0, 1e4) && in(v.phi_deg, -1e6, 1e6), b.name);
+    }
+}
+
+void board(std::string_view input) {
+    const std::string text(input);
+    world::Board b;
+    world::BoardError e;
+    if (!world::parse_board(text, "b.toml", b, e)) {
+        check_sentence(e.to_string(), "b.toml", e.line, e.column, true);
+        return;
+    }
+    FUZZ_CHECK(b.engine == "fixed" || b.engine == "double" || b.engine == "float", b.engine);
+    FUZZ_CHECK(in(b.fps, 1, 1000) && b.threads >= 1 && b.threads <= 16, b.file);
+    for (const std::string& s : {b.name, b.device, b.scene, b.evdev_device}) FUZZ_CHECK(world::is_plain(s), s);
+    for (const std::string& s : b.chips) FUZZ_CHECK(world::is_plain(s), s);
+    for (const world::BoardButton& bb : b.buttons) {
+        FUZZ_CHECK(bb.gpio >= 0 || bb.key >= 0, "a button with neither");
+        FUZZ_CHECK(bb.gpio <= 1023 && bb.key <= 767 && bb.pin >= 0 && bb.pin <= 40, "a button out of range");
+    }
+}
+
+void actions(std::string_view input) {
+    const std::string text(input);
+    app::Script s;
+    app::ScriptError e;
+    if (!app::parse_script(text, "a.txt", s, e)) {
+        check_sentence(e.to_string(), "a.txt", e.line, 1, false);
+        FUZZ_CHECK(e.line >= 1, e.to_string());
+        return;
+    }
+    for (std::size_t i = 0; i < s.events.size(); ++i) {
+        FUZZ_CHECK(std::isfinite(s.events[i].time) && s.events[i].time >= 0, std::to_string(s.events[i].time));
+        FUZZ_CHECK(i == 0 || s.events[i - 1].time <= s.events[i].time, "events out of order");
+        FUZZ_CHECK(s.events[i].control != world::Control::quit, "quit replayed");
+    }
+    for (const app::Setting& st : s.settings) FUZZ_CHECK(world::is_plain(st.value) && !st.value.empty(), st.value);
+}
+
+void world(std::string_view input) {
+    const std::size_t split = input.find("\n%%\n");
+    const std::string_view scene_text = input.substr(0, split);
+    const std::string_view actions_text = split == std::string_view::npos ? std::string_view() : input.substr(split + 4);
+    if (grid_vertices(scene_text) > kMaxVertices) return;
+    world::Scene s;
+    world::SceneError se;
+    if (!world::parse_scene(std::string(scene_text), "w.toml", s, se)) return;  // the scene harness checks these
+    app::Script script;
+    app::ScriptError ae;
+    if (!app::parse_script(std::string(actions_text), "w.txt", script, ae)) return;
+    double points = 0;
+    for (const world::SceneBody& b : s.bodies) points += static_cast<double>(b.vertices.size()) * (b.tessellation + 1);
+    if (points > kMaxEdgePoints) return;
+
+    constexpr int kFrames = 40;
+    const geo::Projection projection = geo::kProjections[input.size() % std::size(geo::kProjections)];
+    world::World<fx::fixed> wf(s);
+    world::World<double> wd(s);
+    world::World<float> wfl(s);
+    world::World<double, true> wp(s);
+    run_world(wf, script, kFrames, projection);
+    run_world(wd, script, kFrames, projection);
+    run_world(wfl, script, kFrames, projection);
+    run_world(wp, script, kFrames, projection);  // the paper's formulas: NaN is theirs to give
+    FUZZ_CHECK(wf.frame == kFrames && wd.frame == kFrames, "frames");
+    if (!finite_world(wf) || !finite_world(wd) || !finite_world(wfl)) {
+        if (std::getenv("NONEUCLID_FUZZ_NAN")) broken("a value that is not finite in an exact engine", std::string(input));
+        ++g_non_finite;
+    }
+}
+
+}  // namespace noneuclid::fuzz

@@ -1,0 +1,42 @@
+// The fuzzing harnesses' bodies (tests/fuzz/README.md): each takes one input and calls the same
+// entry points the program does. libFuzzer runs them (fuzz_main.cpp, the `fuzz` preset, clang);
+// the normal suite replays every input under tests/fuzz/regressions/<name>/ through them
+// (replay_test.cpp, gcc), so an input that once crashed is tried on every build.
+//
+// A harness aborts (a crash for libFuzzer, a failed test for the replay) when a parser breaks
+// its contract: a sentence that is not one clean line with its place, or a result outside the
+// documented ranges. Crashes and sanitizer reports abort by themselves.
+#pragma once
+
+#include <string_view>
+
+namespace noneuclid::fuzz {
+
+void scene(std::string_view input);    // world::parse_scene
+void board(std::string_view input);    // world::parse_board
+void actions(std::string_view input);  // app::parse_script
+// A scene file, then a line "%%", then an actions file: both parsed, the scene built as
+// World<fixed>, World<double>, World<float> and World<double, true>, the actions applied while
+// each steps some frames, and the last frame dumped (world::dump_frame).
+void world(std::string_view input);
+
+struct Harness {
+    const char* name;  // the directory under regressions/, seeds/, findings/
+    void (*run)(std::string_view);
+};
+inline constexpr Harness kHarnesses[] = {
+    {"scene", scene}, {"board", board}, {"actions", actions}, {"world", world}};
+
+// The largest scene the harnesses build, in vertices (grid lines included) and in edge points
+// (vertices times tessellation): in-range values can ask for millions (a [[grid]] with
+// spacing = 0.01, step = 0.001, length = 10000), which says nothing about parsing and would
+// make the fuzzer spend its time allocating. Bigger inputs are skipped, not built.
+inline constexpr double kMaxVertices = 100000;
+inline constexpr double kMaxEdgePoints = 20000;
+
+// Inputs the world harness found whose exact engines (fixed, double, float) gave a value that is
+// not finite: skipped, not failed, unless NONEUCLID_FUZZ_NAN is set in the environment (the
+// numeric ranges are another part of the work; tests/fuzz/findings/ keeps such inputs).
+long non_finite_skipped();
+
+}  // namespace noneuclid::fuzz
