@@ -5,6 +5,7 @@
 
 #include "app/commands.hpp"
 #include "world/budget.hpp"
+#include "world/ranges.hpp"
 #include "world/scene_file.hpp"
 
 namespace noneuclid::app {
@@ -29,6 +30,7 @@ world::Scene load_scene(const Options& o) {
         }
     }
     if (!world::within_budget(scene, over)) usage_error(o.scene + ": the scene: " + over + ".");
+    if (!world::within_ranges(scene, over)) usage_error(o.scene + ": the scene: " + over + ".");
     if (o.has_curvature) scene.curvature = o.curvature;
     return scene;
 }

@@ -36,9 +36,11 @@ inline void num(std::string& out, double v) {
     std::snprintf(buf, sizeof buf, "%.9g", v == 0 ? 0.0 : v);
     out += buf;
 }
+// In (-180, 180] as printed: an angle that num() would round to -180 (within half its last
+// digit, 5e-7) is given as the same angle near +180.
 inline double degrees(double rad) {
     double d = std::remainder(rad, 2 * 3.14159265358979323846) * (180 / 3.14159265358979323846);
-    return d <= -180 ? d + 360 : d;
+    return d <= -180 + 5e-7 ? d + 360 : d;
 }
 inline void polar(std::string& out, double r, double theta) {
     out += '[';

@@ -1,8 +1,10 @@
 #include "world/scene_file.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "world/quote.hpp"
+#include "world/ranges.hpp"
 #include "world/text_file.hpp"
 #include "world/toml_reader.hpp"
 
@@ -20,9 +22,9 @@ void read_body(const toml::table& t, int index, Scene& scene) {
     const Reader r(t, "body " + quote(b.name) + ": ");
     r.only({"name", "position", "facing", "velocity", "acceleration", "spin", "color", "closed", "tessellation",
             "vertices", "controlled", "grid"});
-    r.pair("position", b.r, b.theta_deg, 0, 1e4, "r, theta in degrees");
+    r.pair("position", b.r, b.theta_deg, 0, Ranges::kReach, "r, theta in degrees");
     b.facing_deg = r.number("facing", 0, -1e6, 1e6, "degrees");
-    r.pair("velocity", b.speed, b.direction_deg, 0, 1e3, "speed in world units per second, direction in degrees");
+    r.pair("velocity", b.speed, b.direction_deg, 0, Ranges::kSpeed, "speed in world units per second, direction in degrees");
     r.pair("acceleration", b.accel, b.accel_direction_deg, 0, 1e3, "world units per second^2, direction in degrees");
     b.spin_deg = r.number("spin", 0, -1e6, 1e6, "degrees per second");
     b.color = r.color("color", b.color);
@@ -42,10 +44,12 @@ void read_body(const toml::table& t, int index, Scene& scene) {
             throw Bad{e.source(), "body " + quote(b.name) + ": expected each vertex as [rho, phi in degrees], found " +
                                       (p ? "an array of " + std::to_string(p->size()) : std::string(type_name(e)))};
         SceneBody::Vertex vx;
-        vx.rho = r.as_number(*p->get(0), "vertices", 0, 1e4, "rho, distance from the centre");
+        vx.rho = r.as_number(*p->get(0), "vertices", 0, Ranges::kBodyRadius, "rho, distance from the centre");
         vx.phi_deg = r.as_number(*p->get(1), "vertices", -1e6, 1e6, "phi in degrees from the facing");
         b.vertices.push_back(vx);
     }
+    std::string why;
+    if (!body_within_ranges(b, scene.limit_radius, why)) throw Bad{t.source(), why};
     scene.bodies.push_back(std::move(b));
 }
 
@@ -53,10 +57,11 @@ void read_grid(const toml::table& t, Scene& scene) {
     const Reader r(t, "grid: ");
     r.only({"kind", "spacing", "lines", "length", "step", "color"});
     const std::string kind = r.string("kind", "axes");
-    const double length = r.number("length", scene.limit_radius, 0.01, 1e4, "world units");
-    const double step = r.number("step", 0.25, 0.001, 1e4, "world units between vertices");
+    const double length = r.number("length", scene.limit_radius, 0.01, Ranges::kReach, "world units");
+    const double step = r.number("step", 0.25, 0.001, Ranges::kBodyRadius, "world units between vertices");
     const Rgb color = r.color("color", {70, 90, 120});
     std::string why;
+    const std::size_t first = scene.bodies.size();
     if (kind == "axes") {
         if (!add_axis_grid(scene, r.number("spacing", 0.5, 0.01, 1e4, "world units"), length, step, color, why))
             throw Bad{t.source(), "grid: " + why};
@@ -66,13 +71,26 @@ void read_grid(const toml::table& t, Scene& scene) {
     } else {
         throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + printable(kind) + "\""};
     }
+    // A grid line does not move: its farthest point is its distance from O plus its length.
+    double reach = 0, farthest = 0;
+    for (std::size_t i = first; i < scene.bodies.size(); ++i) {
+        reach = std::max(reach, body_reach(scene.bodies[i], scene.limit_radius));
+        farthest = std::max(farthest, scene.bodies[i].r);
+    }
+    if (reach > Ranges::kReach) {
+        std::ostringstream m;
+        m << "grid: its lines could reach " << reach << " from O (the farthest line is " << farthest
+          << " from O, plus the length " << length << "), past the engines' reach of 2 pi (6.283): a length of at most "
+          << Ranges::kReach - farthest << ", or a lower limit_radius";
+        throw Bad{t.source(), m.str()};
+    }
 }
 
 void read_scene(const toml::table& root, Scene& s) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
-    s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, 1e4, "R in world units");
+    s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
     s.turn_rate_deg = r.number("turn_rate", s.turn_rate_deg, 0, 1e5, "degrees per second");
     s.curvature_rate = r.number("curvature_rate", s.curvature_rate, 0, 100, "per second");

@@ -29,6 +29,7 @@
 
 #include "geometry/geometry.hpp"
 #include "geometry/paper.hpp"
+#include "world/ranges.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::world {
@@ -197,6 +198,7 @@ private:
             const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
             b.speed = hypot(vx, vy);
             if (b.speed != T(0)) b.travel = atan2(vy, vx);
+            if (b.speed > T(Ranges::kSpeed)) b.speed = T(Ranges::kSpeed);  // the ceiling (ranges.hpp)
         }
         if (b.speed != T(0)) {
             const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d

@@ -21,7 +21,7 @@ void actions(std::string_view input);  // app::parse_script
 void world(std::string_view input);
 
 struct Harness {
-    const char* name;  // the directory under regressions/, seeds/, findings/
+    const char* name;  // the directory under regressions/ and seeds/
     void (*run)(std::string_view);
 };
 inline constexpr Harness kHarnesses[] = {
@@ -33,10 +33,5 @@ inline constexpr Harness kHarnesses[] = {
 // make the fuzzer spend its time allocating. Bigger inputs are skipped, not built.
 inline constexpr double kMaxVertices = 100000;
 inline constexpr double kMaxEdgePoints = 20000;
-
-// Inputs the world harness found whose exact engines (fixed, double, float) gave a value that is
-// not finite: skipped, not failed, unless NONEUCLID_FUZZ_NAN is set in the environment (the
-// numeric ranges are another part of the work; tests/fuzz/findings/ keeps such inputs).
-long non_finite_skipped();
 
 }  // namespace noneuclid::fuzz

@@ -569,12 +569,11 @@ TEST(Budget, GridsAndTheStressSceneOverItAreRefusedBeforeAnythingIsBuilt) {
 TEST(Budget, ASceneFileOverItNamesTheGridAndWhatToLower) {
     Scene s;
     SceneError err;
-    EXPECT_FALSE(parse_scene("limit_radius = 10000\n[[grid]]\nkind = \"axes\"\nspacing = 0.01\nstep = 0.001\n"
-                             "length = 10000\n",
-                             "big.toml", s, err));
-    EXPECT_EQ(err.to_string(), "big.toml:2:1: grid: it would have 20,000,001 vertices in one body, over the 10,000 a "
-                               "world may have: use fewer vertices (a larger spacing or step, a shorter length, fewer "
-                               "lines)");
+    // 2 (2 * 314 + 1) = 1,258 lines (spacing 0.01 over R = pi), each 2 * 3,142 + 1 = 6,285 vertices
+    // (a vertex every 0.001 along pi each way).
+    EXPECT_FALSE(parse_scene("[[grid]]\nkind = \"axes\"\nspacing = 0.01\nstep = 0.001\n", "big.toml", s, err));
+    EXPECT_EQ(err.to_string(), "big.toml:1:1: grid: it would have 7,906,530 vertices, over the 524,288 a world may have: "
+                               "use fewer bodies or vertices (a larger spacing or step, a shorter length, fewer lines)");
     // Points: few bodies, but each tessellated finely.
     std::string text = "[[body]]\nname = \"b\"\ntessellation = 256\nvertices = [";
     for (int i = 0; i < 5000; ++i) text += (i ? ", " : "") + std::string("[0.1, ") + std::to_string(i * 0.072) + "]";
