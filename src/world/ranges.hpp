@@ -38,9 +38,9 @@ bool body_moves(const SceneBody& b);
 // anywhere up to the limit radius R, plus its largest vertex distance rho.
 double body_reach(const SceneBody& b, double R);
 
-// Whether one body is within the ranges: its centre inside the limit circle, its vertices within
-// kBodyRadius of it (a grid line's excepted), its reach within kReach, its speed within kSpeed; false with a sentence in `why` (no full stop) that ends with
-// what to change.
+// Whether one body is within the ranges: its centre inside the limit circle, its vertices
+// within kBodyRadius of it (a grid line's excepted), its reach within kReach, its speed within
+// kSpeed; false with a sentence in `why` (no full stop) that ends with what to change.
 bool body_within_ranges(const SceneBody& b, double R, std::string& why);
 
 // The same for every body of the scene, the sentence naming the first body out of range.

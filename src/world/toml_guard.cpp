@@ -24,25 +24,32 @@ bool bare_key_character(char c) {
 bool table_header(std::string_view text, std::size_t i, std::string& message) {
     std::size_t k = i + 1;
     const bool array = k < text.size() && text[k] == '[';
-    if (array) ++k;
-    while (k < text.size() && (text[k] == ' ' || text[k] == '\t')) ++k;
+    if (array)
+        ++k;
+    while (k < text.size() && (text[k] == ' ' || text[k] == '\t'))
+        ++k;
     if (k < text.size()) {
         const char c = text[k];
-        if (c == '\r' && (k + 1 == text.size() || text[k + 1] != '\n')) return true;  // a lone CR: refused as one
-        if (bare_key_character(c) || c == '"' || c == '\'' || c == ']' || (c == '[' && !array)) return true;
+        if (c == '\r' && (k + 1 == text.size() || text[k + 1] != '\n'))
+            return true;  // a lone CR: refused as one
+        if (bare_key_character(c) || c == '"' || c == '\'' || c == ']' || (c == '[' && !array))
+            return true;
     }
     std::string found = "the end of the file";
     if (k < text.size()) {
         char32_t c = 0;
         std::size_t len = 1;
-        if (!utf8_decode(text, k, c, len)) len = 1;
+        if (!utf8_decode(text, k, c, len))
+            len = 1;
         found = text[k] == '\n' || text[k] == '\r' ? "the end of the line" : quote(text.substr(k, len));
     }
     message = std::string("expected a table's name after '") + (array ? "[[" : "[") + "', found " + found;
     return false;
 }
 
-bool digit(char c) { return c >= '0' && c <= '9'; }
+bool digit(char c) {
+    return c >= '0' && c <= '9';
+}
 
 // A value that starts at text[i] (a digit) with a date: toml++ reads a time after a 'T' or 't'
 // with an assertion, not a check, that a digit follows (`1979-05-27tz:`); and when the first
@@ -53,177 +60,252 @@ bool digit(char c) { return c >= '0' && c <= '9'; }
 bool date_time(std::string_view text, std::size_t i, std::string& message) {
     const std::string_view d = text.substr(i, 12);
     std::string found;
-    if (d.size() >= 11 && digit(d[0]) && digit(d[1]) && digit(d[2]) && digit(d[3]) && d[4] == '-' && digit(d[5]) &&
-        digit(d[6]) && d[7] == '-' && digit(d[8]) && digit(d[9]) && (d[10] == 'T' || d[10] == 't') &&
-        (d.size() < 12 || !digit(d[11])))
+    if (d.size() >= 11 && digit(d[0]) && digit(d[1]) && digit(d[2]) && digit(d[3]) && d[4] == '-' && digit(d[5])
+        && digit(d[6]) && d[7] == '-' && digit(d[8]) && digit(d[9]) && (d[10] == 'T' || d[10] == 't')
+        && (d.size() < 12 || !digit(d[11])))
         found = std::string(d.substr(0, 11));
     // The value's characters as toml++ collects them (underscores left out), to its end.
     std::string chars;
     std::size_t k = i;
     for (; k < text.size() && chars.size() <= 10; ++k) {
         const char c = text[k];
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ']' || c == '}' || c == ',' || c == '#') break;
-        if (c != '_') chars += c;
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ']' || c == '}' || c == ',' || c == '#')
+            break;
+        if (c != '_')
+            chars += c;
     }
-    if (chars.size() == 10 && chars[4] == '-' && chars[7] == '-' && k + 1 < text.size() && text[k] == ' ' &&
-        digit(text[k + 1]) && (k + 2 == text.size() || !digit(text[k + 2])))
+    if (chars.size() == 10 && chars[4] == '-' && chars[7] == '-' && k + 1 < text.size() && text[k] == ' '
+        && digit(text[k + 1]) && (k + 2 == text.size() || !digit(text[k + 2])))
         found = std::string(text.substr(i, k + 2 - i));
-    if (found.empty()) return true;
+    if (found.empty())
+        return true;
     message = "expected a date and a time (YYYY-MM-DDTHH:MM:SS), found " + quote(found);
     return false;
 }
 
 }  // namespace
 
-bool toml_guard(std::string_view text, long& line, long& column, std::string& message) {
-    enum State { outside, comment, basic, literal, ml_basic, ml_literal };
-    State state = outside;
-    std::string open;            // the arrays ('[') and inline tables ('{') open in a value
-    bool value_on_line = false;  // a '=' outside them on this line: a '[' opens an array
-    char before = '\n';          // the last character outside strings but spaces and tabs
-    bool in_token = false;       // in a bare value: a number, a date, a boolean or a bad token
-    bool after_escape = false;       // the previous character was a backslash in a basic string
-    bool line_continuation = false;  // skipping the whitespace after a backslash in a basic string
-    line = 1, column = 1;
-    std::size_t i = 0;
-    if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // a UTF-8 byte-order mark: toml++ skips it
-    auto fail = [&](std::string m) {
-        message = "not valid TOML: " + std::move(m);
-        return false;
-    };
-    // The run of `q` starting at i (a closing delimiter and up to two quotes of content).
-    auto run_of = [&](char q) {
-        std::size_t n = 0;
-        while (i + n < text.size() && text[i + n] == q) ++n;
-        return n;
-    };
-    while (i < text.size()) {
-        char32_t c = 0;
-        std::size_t len = 0;
-        if (!utf8_decode(text, i, c, len))
-            return fail("the byte " + printable(text.substr(i, 1)) + " is not UTF-8 (save the file as UTF-8)");
-        if (c == '\r') {
-            if (i + 1 < text.size() && text[i + 1] == '\n') {
-                ++i;  // CR LF: a line end like LF, handled below
+namespace {
+
+// The scan: one pass over the text, in one of six states, tracking what toml++'s reader would
+// be in at each character. Each state's rules are a method.
+class Guard {
+public:
+    Guard(std::string_view text, long& line, long& column, std::string& message)
+        : text_(text), line_(line), column_(column), message_(message) {}
+
+    bool run() {
+        line_ = 1, column_ = 1;
+        if (text_.substr(0, 3) == "\xEF\xBB\xBF")
+            i_ = 3;  // a UTF-8 byte-order mark: toml++ skips it
+        while (i_ < text_.size()) {
+            char32_t c = 0;
+            std::size_t len = 0;
+            if (!utf8_decode(text_, i_, c, len))
+                return fail("the byte " + printable(text_.substr(i_, 1)) + " is not UTF-8 (save the file as UTF-8)");
+            if (c == '\r') {
+                if (i_ + 1 < text_.size() && text_[i_ + 1] == '\n') {
+                    ++i_;  // CR LF: a line end like LF, handled below
+                    continue;
+                }
+                return fail("a carriage return (\\x0d) not followed by a line feed: lines end with LF or CR LF");
+            }
+            if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7F)
+                return fail("the control character " + printable(text_.substr(i_, 1))
+                            + " (TOML allows only tab and line ends; write it as an escape in a string)");
+            if (line_continuation_) {
+                if (c == ' ' || c == '\t' || c == '\n') {
+                    if (c == '\n')
+                        ++line_, column_ = 0;
+                    ++i_, ++column_;
+                    continue;
+                }
+                line_continuation_ = false;
+                if (c >= 0x80)
+                    return fail("the character " + character(c, len)
+                                + " right after a line-ending backslash: write it as an escape, \\u"
+                                + code_point(c).substr(2));
+            }
+            if (c == '\n') {
+                line_end();
                 continue;
             }
-            return fail("a carriage return (\\x0d) not followed by a line feed: lines end with LF or CR LF");
-        }
-        if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7F)
-            return fail("the control character " + printable(text.substr(i, 1)) +
-                        " (TOML allows only tab and line ends; write it as an escape in a string)");
-        if (line_continuation) {
-            if (c == ' ' || c == '\t' || c == '\n') {
-                if (c == '\n') ++line, column = 0;
-                ++i, ++column;
-                continue;
-            }
-            line_continuation = false;
-            if (c >= 0x80)
-                return fail("the character " + quote(text.substr(i, len)) + " (" + code_point(c) +
-                            ") right after a line-ending backslash: write it as an escape, \\u" +
-                            code_point(c).substr(2));
-        }
-        if (c == '\n') {
-            if (state == comment || state == basic || state == literal) state = outside;
-            if (open.empty()) value_on_line = false;
-            if (state == outside) before = '\n';
-            in_token = false;
-            after_escape = false;
-            ++line, column = 1, ++i;
-            continue;
-        }
-        std::size_t advance = len;
-        switch (state) {
-            case outside: {
-                // A bare value (a number, a date, true, a bad token) runs to a value's end, and
-                // toml++ reads it all before it judges it: a quote or a bracket inside it is not
-                // a string's or an array's start (`x = +z"é"`, `[[-Y["é`).
-                const bool value_start = before == '=' || (!open.empty() && open.back() == '[' &&
-                                                           (before == '[' || before == ',' || before == '\n'));
-                if (in_token && (c == ' ' || c == '\t' || c == ']' || c == '}' || c == ',' || c == '#')) {
-                    in_token = false;
-                } else if (!in_token && value_start &&
-                           (c >= 0x80 || std::string_view(" \t[{\"'#]},").find(static_cast<char>(c)) == std::string_view::npos)) {
-                    in_token = true;
-                    if (digit(static_cast<char>(c)) && !date_time(text, i, message)) return fail(message);
-                }
-                if (in_token) {
-                    if (c >= 0x80)
-                        return fail("the character " + quote(text.substr(i, len)) + " (" + code_point(c) +
-                                    ") outside quotes: a key or a value with it must be in quotes");
-                } else if (c == '[' && open.empty() && !value_on_line) {
-                    if (!table_header(text, i, message)) return fail(message);
-                } else if (c == '[' || c == '{') {
-                    open.push_back(static_cast<char>(c));
-                } else if ((c == ']' || c == '}') && !open.empty()) {
-                    // toml++ takes a '}' where an array expects a value as one (an assertion):
-                    // a closing bracket must match the innermost opening one.
-                    if ((c == ']') != (open.back() == '['))
-                        return fail(std::string("'") + static_cast<char>(c) + "' closes " +
-                                    (open.back() == '[' ? "an array, which ']' closes" : "an inline table, which '}' closes"));
-                    open.pop_back();
-                } else if (c == '=' && open.empty()) {
-                    value_on_line = true;
-                } else if (c == '#') {
-                    state = comment;
-                } else if ((c == '"' || c == '\'') && std::string_view("=[{,.\n").find(before) != std::string_view::npos) {
-                    // A string: where a key or a value begins. A quote anywhere else (`x = +z"é"`)
-                    // is part of a bad token that toml++ reads on, character by character.
-                    const bool multi = run_of(static_cast<char>(c)) >= 3;
-                    state = c == '"' ? (multi ? ml_basic : basic) : (multi ? ml_literal : literal);
-                    advance = multi ? 3 : 1;
-                } else if (c >= 0x80) {
-                    return fail("the character " + quote(text.substr(i, len)) + " (" + code_point(c) +
-                                ") outside quotes: a key or a value with it must be in quotes");
-                }
-                if (c != ' ' && c != '\t') before = static_cast<char>(c);
-                break;
-            }
-            case comment: break;
-            case basic:
-            case ml_basic:
-                if (after_escape) {
-                    after_escape = false;
-                    // toml++ asks its whitespace table about the character after a backslash,
-                    // and the table has holes for non-ASCII ones. No escape is one anyway.
-                    if (c >= 0x80)
-                        return fail("the character " + quote(text.substr(i, len)) + " (" + code_point(c) +
-                                    ") after a backslash: an escape is \\n, \\t, \\\", \\\\, \\uXXXX and the like");
-                    // A backslash before whitespace is a line-ending backslash (or, in a one-line
-                    // string, a bad escape): toml++ skips the whitespace and line ends after it.
-                    if (c == ' ' || c == '\t') {
-                        line_continuation = true;
+            std::size_t advance = len;
+            switch (state_) {
+                case outside:
+                    if (!outside_char(c, len, advance))
+                        return false;
+                    break;
+                case comment:
+                    break;
+                case basic:
+                case ml_basic:
+                    if (!basic_char(c, len, advance))
+                        return false;
+                    if (line_continuation_ && advance == 0)
                         continue;  // the same character again, in the skip
-                    }
-                } else if (c == '\\') {
-                    after_escape = true;
-                    if (i + 1 < text.size() && (text[i + 1] == '\n' || text[i + 1] == '\r'))
-                        line_continuation = true, after_escape = false;
-                } else if (c == '"') {
-                    const std::size_t n = run_of('"');
-                    if (state == basic) state = outside, advance = 1;
-                    else if (n >= 3) state = outside, advance = n;
-                    else advance = n;
-                    if (state == outside) before = '"';
-                }
-                break;
-            case literal:
-            case ml_literal:
-                if (c == '\'') {
-                    const std::size_t n = run_of('\'');
-                    if (state == literal) state = outside, advance = 1;
-                    else if (n >= 3) state = outside, advance = n;
-                    else advance = n;
-                    if (state == outside) before = '"';
-                }
-                break;
+                    break;
+                case literal:
+                case ml_literal:
+                    literal_char(c, advance);
+                    break;
+            }
+            // Columns count characters; a run of quotes is that many.
+            column_ += static_cast<long>(c < 0x80 ? advance : 1);
+            i_ += advance;
         }
-        // Columns count characters; a run of quotes is that many.
-        column += static_cast<long>(c < 0x80 ? advance : 1);
-        i += advance;
+        return true;
     }
-    return true;
+
+private:
+    enum State { outside, comment, basic, literal, ml_basic, ml_literal };
+
+    bool fail(std::string m) {
+        message_ = "not valid TOML: " + std::move(m);
+        return false;
+    }
+    std::string character(char32_t c, std::size_t len) const {
+        return quote(text_.substr(i_, len)) + " (" + code_point(c) + ")";
+    }
+    // The run of `q` starting at i (a closing delimiter and up to two quotes of content).
+    std::size_t run_of(char q) const {
+        std::size_t n = 0;
+        while (i_ + n < text_.size() && text_[i_ + n] == q)
+            ++n;
+        return n;
+    }
+    void line_end() {
+        if (state_ == comment || state_ == basic || state_ == literal)
+            state_ = outside;
+        if (open_.empty())
+            value_on_line_ = false;
+        if (state_ == outside)
+            before_ = '\n';
+        in_token_ = false;
+        after_escape_ = false;
+        ++line_, column_ = 1, ++i_;
+    }
+
+    // Outside strings and comments: keys, table headers, brackets, bare values.
+    bool outside_char(char32_t c, std::size_t len, std::size_t& advance) {
+        // A bare value (a number, a date, true, a bad token) runs to a value's end, and toml++
+        // reads it all before it judges it: a quote or a bracket inside it is not a string's or
+        // an array's start (`x = +z"é"`, `[[-Y["é`).
+        const bool value_start =
+            before_ == '='
+            || (!open_.empty() && open_.back() == '[' && (before_ == '[' || before_ == ',' || before_ == '\n'));
+        if (in_token_ && (c == ' ' || c == '\t' || c == ']' || c == '}' || c == ',' || c == '#')) {
+            in_token_ = false;
+        } else if (!in_token_ && value_start
+                   && (c >= 0x80
+                       || std::string_view(" \t[{\"'#]},").find(static_cast<char>(c)) == std::string_view::npos)) {
+            in_token_ = true;
+            if (digit(static_cast<char>(c)) && !date_time(text_, i_, message_))
+                return fail(message_);
+        }
+        if (in_token_) {
+            if (c >= 0x80)
+                return fail("the character " + character(c, len)
+                            + " outside quotes: a key or a value with it must be in quotes");
+        } else if (c == '[' && open_.empty() && !value_on_line_) {
+            if (!table_header(text_, i_, message_))
+                return fail(message_);
+        } else if (c == '[' || c == '{') {
+            open_.push_back(static_cast<char>(c));
+        } else if ((c == ']' || c == '}') && !open_.empty()) {
+            // toml++ takes a '}' where an array expects a value as one (an assertion): a closing
+            // bracket must match the innermost opening one.
+            if ((c == ']') != (open_.back() == '['))
+                return fail(
+                    std::string("'") + static_cast<char>(c) + "' closes "
+                    + (open_.back() == '[' ? "an array, which ']' closes" : "an inline table, which '}' closes"));
+            open_.pop_back();
+        } else if (c == '=' && open_.empty()) {
+            value_on_line_ = true;
+        } else if (c == '#') {
+            state_ = comment;
+        } else if ((c == '"' || c == '\'') && std::string_view("=[{,.\n").find(before_) != std::string_view::npos) {
+            // A string: where a key or a value begins. A quote anywhere else (`x = +z"é"`) is
+            // part of a bad token that toml++ reads on, character by character.
+            const bool multi = run_of(static_cast<char>(c)) >= 3;
+            state_ = c == '"' ? (multi ? ml_basic : basic) : (multi ? ml_literal : literal);
+            advance = multi ? 3 : 1;
+        } else if (c >= 0x80) {
+            return fail("the character " + character(c, len)
+                        + " outside quotes: a key or a value with it must be in quotes");
+        }
+        if (c != ' ' && c != '\t')
+            before_ = static_cast<char>(c);
+        return true;
+    }
+
+    // In a basic string, one-line or multi-line: escapes and the closing quotes. Sets advance
+    // to 0 when the character is to be read again as part of a line-ending backslash's skip.
+    bool basic_char(char32_t c, std::size_t len, std::size_t& advance) {
+        if (after_escape_) {
+            after_escape_ = false;
+            // toml++ asks its whitespace table about the character after a backslash, and the
+            // table has holes for non-ASCII ones. No escape is one anyway.
+            if (c >= 0x80)
+                return fail("the character " + character(c, len)
+                            + " after a backslash: an escape is \\n, \\t, \\\", \\\\, \\uXXXX and the like");
+            // A backslash before whitespace is a line-ending backslash (or, in a one-line string,
+            // a bad escape): toml++ skips the whitespace and line ends after it.
+            if (c == ' ' || c == '\t') {
+                line_continuation_ = true;
+                advance = 0;
+            }
+        } else if (c == '\\') {
+            after_escape_ = true;
+            if (i_ + 1 < text_.size() && (text_[i_ + 1] == '\n' || text_[i_ + 1] == '\r'))
+                line_continuation_ = true, after_escape_ = false;
+        } else if (c == '"') {
+            const std::size_t n = run_of('"');
+            if (state_ == basic)
+                state_ = outside, advance = 1;
+            else if (n >= 3)
+                state_ = outside, advance = n;
+            else
+                advance = n;
+            if (state_ == outside)
+                before_ = '"';
+        }
+        return true;
+    }
+
+    // In a literal string, one-line or multi-line: only the closing quotes matter.
+    void literal_char(char32_t c, std::size_t& advance) {
+        if (c != '\'')
+            return;
+        const std::size_t n = run_of('\'');
+        if (state_ == literal)
+            state_ = outside, advance = 1;
+        else if (n >= 3)
+            state_ = outside, advance = n;
+        else
+            advance = n;
+        if (state_ == outside)
+            before_ = '"';
+    }
+
+    std::string_view text_;
+    long& line_;
+    long& column_;
+    std::string& message_;
+    std::size_t i_ = 0;
+    State state_ = outside;
+    std::string open_;                // the arrays ('[') and inline tables ('{') open in a value
+    bool value_on_line_ = false;      // a '=' outside them on this line: a '[' opens an array
+    char before_ = '\n';              // the last character outside strings but spaces and tabs
+    bool in_token_ = false;           // in a bare value: a number, a date, a boolean or a bad token
+    bool after_escape_ = false;       // the previous character was a backslash in a basic string
+    bool line_continuation_ = false;  // skipping the whitespace after a backslash in a basic string
+};
+
+}  // namespace
+
+bool toml_guard(std::string_view text, long& line, long& column, std::string& message) {
+    return Guard(text, line, column, message).run();
 }
 
 }  // namespace noneuclid::world::tomlr

@@ -43,7 +43,8 @@ world::Scene random_scene(std::mt19937& rng) {
     world::Scene s;
     s.curvature = 2 * u(rng) - 1;
     // Half the scenes near the largest R, the rest anywhere down to the smallest.
-    s.limit_radius = u(rng) < 0.5 ? Ranges::kLimitRadius * (0.6 + 0.4 * u(rng)) : 1e-3 + (Ranges::kLimitRadius - 1e-3) * u(rng);
+    s.limit_radius =
+        u(rng) < 0.5 ? Ranges::kLimitRadius * (0.6 + 0.4 * u(rng)) : 1e-3 + (Ranges::kLimitRadius - 1e-3) * u(rng);
     s.sweep_rate = u(rng) < 0.3 ? 3 * u(rng) : 0;
     s.thrust = 1000 * u(rng);
     const int bodies = 2 + static_cast<int>(4 * u(rng));
@@ -67,7 +68,8 @@ world::Scene random_scene(std::mt19937& rng) {
         const double room = Ranges::kReach - (moves ? std::max(b.r, s.limit_radius) : b.r);
         const double rho_max = std::min(Ranges::kBodyRadius, std::max(0.0, room)) * (u(rng) < 0.5 ? 1 : u(rng));
         const int n = 1 + static_cast<int>(6 * u(rng));
-        for (int k = 0; k < n; ++k) b.vertices.push_back({rho_max * (k == 0 ? 1 : u(rng)), 360.0 * k / n + 20 * u(rng)});
+        for (int k = 0; k < n; ++k)
+            b.vertices.push_back({rho_max * (k == 0 ? 1 : u(rng)), 360.0 * k / n + 20 * u(rng)});
         s.bodies.push_back(b);
     }
     return s;
@@ -87,11 +89,13 @@ bool all_finite(const W& w, std::string& where) {
         for (std::size_t e = 0; ok && e < v.size(); ++e) {
             ok = !bad(v[e]);
             W::engine::edge_points(w.K, v[e], v[(e + 1) % v.size()], b.desc->tessellation, [&](int, geo::Polar<T> p) {
-                if (bad(p)) ok = false;
+                if (bad(p))
+                    ok = false;
             });
         }
         if (!ok) {
-            where = b.desc->name + " at frame " + std::to_string(w.frame) + " at K = " + std::to_string(static_cast<double>(w.K));
+            where = b.desc->name + " at frame " + std::to_string(w.frame)
+                    + " at K = " + std::to_string(static_cast<double>(w.K));
             return false;
         }
     }
@@ -115,10 +119,12 @@ void run_and_check(W w, int frames, const char* engine, int scene_index, bool fi
         }
         w.step(T(1.0 / 60));
         std::string where;
-        if (!finite) continue;
+        if (!finite)
+            continue;
         ASSERT_TRUE(all_finite(w, where)) << engine << ", scene " << scene_index << ": not finite: " << where;
         for (const auto& b : w.bodies) {
-            ASSERT_LE(static_cast<double>(b.centre.r), static_cast<double>(w.R) * (1 + 1e-6) + 1e-4) << engine << " " << scene_index;
+            ASSERT_LE(static_cast<double>(b.centre.r), static_cast<double>(w.R) * (1 + 1e-6) + 1e-4)
+                << engine << " " << scene_index;
             ASSERT_LE(static_cast<double>(b.speed), Ranges::kSpeed * (1 + 1e-6) + 1e-4) << engine << " " << scene_index;
         }
     }
@@ -153,15 +159,20 @@ double compare_points(const world::World<fixed>& wf, const world::World<double>&
     double worst = 0;
     for (std::size_t i = 0; i < std::min(nf, nd); ++i) {
         const render::SubPoint p = sf.points[i], q = sd.points[i];
-        const bool bf = p.x == render::kBreak.x && p.y == render::kBreak.y, bd = q.x == render::kBreak.x && q.y == render::kBreak.y;
+        const bool bf = p.x == render::kBreak.x && p.y == render::kBreak.y,
+                   bd = q.x == render::kBreak.x && q.y == render::kBreak.y;
         EXPECT_EQ(bf, bd) << "scene " << scene_index << " body " << bi << " entry " << i;
-        if (bf || bd) continue;
+        if (bf || bd)
+            continue;
         const double qx = q.x / double(render::kSub), qy = q.y / double(render::kSub);
-        if (qx < 0 || qx > W || qy < 0 || qy > H) continue;  // off the canvas: clipped
+        if (qx < 0 || qx > W || qy < 0 || qy > H)
+            continue;                                                  // off the canvas: clipped
         const double from_o = std::hypot(qx - W / 2.0, qy - H / 2.0);  // pixels; the limit circle's radius is H / 2
-        if (from_o > H / 2.0 + 1) continue;                                // outside the limit circle
+        if (from_o > H / 2.0 + 1)
+            continue;  // outside the limit circle
         const double K = static_cast<double>(wd.K);
-        if (K > 0 && from_o * wd.R / (H / 2.0) > kPi / std::sqrt(K) - kNearAntipode) continue;
+        if (K > 0 && from_o * wd.R / (H / 2.0) > kPi / std::sqrt(K) - kNearAntipode)
+            continue;
         worst = std::max(worst, std::hypot(p.x / double(render::kSub) - qx, p.y / double(render::kSub) - qy));
     }
     return worst;
@@ -182,8 +193,8 @@ TEST(Ranges, FixedDrawsWithinItsToleranceOfDoubleOverTheWholeAcceptedRange) {
             sd.prepare(wd);
             for (std::size_t bi = 0; bi < s.bodies.size(); ++bi) {
                 const double d = compare_points(wf, wd, bi, sf, sd, i);
-                EXPECT_LE(d, kFixedTolerancePx) << "scene " << i << " body " << bi << " K " << K << " R " << s.limit_radius
-;
+                EXPECT_LE(d, kFixedTolerancePx)
+                    << "scene " << i << " body " << bi << " K " << K << " R " << s.limit_radius;
                 worst = std::max(worst, d);
             }
         }
@@ -204,7 +215,8 @@ TEST(Ranges, ValuesJustPastTheRangesAreRefusedWithTheReason) {
         {"[[body]]\nvelocity = [20.01, 0]\nvertices = [[0.1, 0]]\n", "'velocity' must be from 0 to 20"},
         {"[[body]]\nvertices = [[1.41, 0]]\n", "'vertices' must be from 0 to 1.4 (rho, distance from the centre)"},
         {"[[grid]]\nstep = 1.5\n", "'step' must be from 0.001 to 1.4"},
-        {"limit_radius = 3\n[[grid]]\nkind = \"axes\"\nlength = 3.5\n", "grid: its lines could reach 6.5 from O (the farthest line is 3"},
+        {"limit_radius = 3\n[[grid]]\nkind = \"axes\"\nlength = 3.5\n",
+         "grid: its lines could reach 6.5 from O (the farthest line is 3"},
     };
     for (const Case& c : cases) {
         world::Scene s;
@@ -215,8 +227,8 @@ TEST(Ranges, ValuesJustPastTheRangesAreRefusedWithTheReason) {
     // And just inside: read.
     world::Scene s;
     world::SceneError err;
-    EXPECT_TRUE(world::parse_scene("limit_radius = 3\n[[body]]\nposition = [3, 0]\nvelocity = [20, 0]\nvertices = [[1.4, 0]]\n",
-                                   "s.toml", s, err))
+    EXPECT_TRUE(world::parse_scene(
+        "limit_radius = 3\n[[body]]\nposition = [3, 0]\nvelocity = [20, 0]\nvertices = [[1.4, 0]]\n", "s.toml", s, err))
         << err.to_string();
 }
 
@@ -228,7 +240,8 @@ TEST(Ranges, AccelerationStopsAtTheSpeedCeiling) {
     s.bodies.push_back(b);
     world::World<fixed> wf(s);
     world::World<double> wd(s);
-    for (int f = 0; f < 600; ++f) wf.step(fixed(1.0 / 60)), wd.step(1.0 / 60);
+    for (int f = 0; f < 600; ++f)
+        wf.step(fixed(1.0 / 60)), wd.step(1.0 / 60);
     EXPECT_NEAR(static_cast<double>(wf.bodies[0].speed), Ranges::kSpeed, 1e-4);
     EXPECT_DOUBLE_EQ(wd.bodies[0].speed, Ranges::kSpeed);
 }
