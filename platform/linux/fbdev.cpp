@@ -36,6 +36,30 @@ const char* format_name(const render::PixelFormat& f) {
     return "custom";
 }
 
+// Why the framebuffer could not be opened, and what to do about it.
+std::string open_error(const std::string& path, int e) {
+    if (e == ENOENT || e == ENXIO || e == ENODEV)
+        return "there is no framebuffer " + path + ": check the device (ls /dev/fb*), enable a display driver with fbdev emulation (on a Pi: dtoverlay=vc4-kms-v3d in config.txt), or use --display x11 or png";
+    if (e == EACCES || e == EPERM)
+        return "no permission to open the framebuffer " + path + ": add the user to the video group (sudo usermod -aG video $USER, then log in again) or run it as the noneuclid service";
+    return "cannot open the framebuffer " + path + " (" + errno_text(e) + "): check that it is a framebuffer device";
+}
+
+// What is wrong with the geometry the driver reports, or null. Every number is checked before
+// it is used: the picture's rows, from the offsets on, must lie inside the memory that is
+// mapped (a driver reporting an xoffset past the line, or a memory size too small, would
+// otherwise have the copy write past the mapping). All in 64 bits: the fields are 32-bit.
+const char* geometry_fault(const fb_fix_screeninfo& fix, const fb_var_screeninfo& var, uint64_t bpp) {
+    const uint64_t w = var.xres, h = var.yres, line = fix.line_length, mem = fix.smem_len;
+    const uint64_t row_end = (uint64_t{var.xoffset} + w) * bpp, rows_end = uint64_t{var.yoffset} + h;
+    return w == 0 || h == 0              ? "an empty mode"
+           : w > 16384 || h > 16384      ? "a mode larger than 16384 pixels a side"
+           : line > (uint64_t{1} << 28)  ? "a line length over 256 MiB"
+           : row_end > line              ? "rows (with their x offset) longer than a line"
+           : rows_end * line > mem       ? "rows (with their y offset) past the end of its memory"
+                                         : nullptr;
+}
+
 }  // namespace
 
 Fbdev::~Fbdev() {
@@ -47,13 +71,7 @@ bool Fbdev::open(const std::string& path, std::string& error) {
     path_ = path;
     fd_ = ::open(path.c_str(), O_RDWR | O_CLOEXEC);
     if (fd_ < 0) {
-        const int e = errno;
-        if (e == ENOENT || e == ENXIO || e == ENODEV)
-            error = "there is no framebuffer " + path + ": check the device (ls /dev/fb*), enable a display driver with fbdev emulation (on a Pi: dtoverlay=vc4-kms-v3d in config.txt), or use --display x11 or png";
-        else if (e == EACCES || e == EPERM)
-            error = "no permission to open the framebuffer " + path + ": add the user to the video group (sudo usermod -aG video $USER, then log in again) or run it as the noneuclid service";
-        else
-            error = "cannot open the framebuffer " + path + " (" + errno_text(e) + "): check that it is a framebuffer device";
+        error = open_error(path, errno);
         return false;
     }
     fb_fix_screeninfo fix{};
@@ -83,20 +101,9 @@ bool Fbdev::open(const std::string& path, std::string& error) {
         error = text;
         return false;
     }
-    // Every number the driver reports is checked before it is used: the picture's rows, from
-    // the offsets on, must lie inside the memory that is mapped (a driver reporting an xoffset
-    // past the line, or a memory size too small, would otherwise have the copy write past the
-    // mapping). All in 64 bits: the fields are 32-bit unsigned.
     const uint64_t w = var.xres, h = var.yres, bpp = static_cast<uint64_t>(format_.bytes_per_pixel());
     const uint64_t line = fix.line_length, mem = fix.smem_len;
-    const uint64_t row_end = (uint64_t{var.xoffset} + w) * bpp, rows_end = uint64_t{var.yoffset} + h;
-    const char* wrong = w == 0 || h == 0                   ? "an empty mode"
-                        : w > 16384 || h > 16384           ? "a mode larger than 16384 pixels a side"
-                        : line > (uint64_t{1} << 28)       ? "a line length over 256 MiB"
-                        : row_end > line                   ? "rows (with their x offset) longer than a line"
-                        : rows_end * line > mem            ? "rows (with their y offset) past the end of its memory"
-                                                           : nullptr;
-    if (wrong) {
+    if (const char* wrong = geometry_fault(fix, var, bpp)) {
         char text[320];
         std::snprintf(text, sizeof text,
                       "%s (%s) reports %s (%ux%u at offset %u,%u, virtual %ux%u, %u bits per pixel, line %u bytes, "
