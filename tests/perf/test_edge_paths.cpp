@@ -352,7 +352,10 @@ TEST(FastPaths, BodyPointsMatchThePolarPath) {
                         f.mismatched + l.mismatched + d.mismatched);
             EXPECT_GT(f.points, 100);
             EXPECT_LE(f.fast, f.polar + 0.02) << c.scene << " " << c.K << " " << geo::projection_name(proj);
-            EXPECT_LE(l.fast, l.polar + 0.002) << c.scene << " " << c.K << " " << geo::projection_name(proj);
+            // float near the gnomonic horizon, where the projection magnifies without bound, errs by
+            // tens of pixels on either path (stress at K = 1): there the paths are compared relatively.
+            EXPECT_LE(l.fast, std::max(l.polar + 0.002, 1.001 * l.polar))
+                << c.scene << " " << c.K << " " << geo::projection_name(proj);
             EXPECT_LE(d.fast, std::max(1e-6, 1.001 * d.polar)) << c.scene << " " << c.K << " " << geo::projection_name(proj);
             EXPECT_LE(f.mismatched + l.mismatched + d.mismatched, 3);  // only on a visibility threshold
         }
