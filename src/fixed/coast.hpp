@@ -177,15 +177,34 @@ struct CoastEnd {
     angle bearing, turn;
 };
 
-// From (r0, theta0) at heading theta0 + delta (r0 in Q24), distance D along the geodesic.
-// False (out untouched) outside the domain above.
-inline bool coast_walk(fixed K, int64_t r0_q24, angle delta, fixed D, CoastEnd& out) noexcept {
+// What every walk of one coast shares: K, the start's distance r0 (Q24) with S_K and C_K at r0
+// and r0/2, and the heading against the outward radial, delta (cos, sin, 2 cos^2(delta/2)).
+// a < 0: outside the domain above.
+struct CoastStart {
+    int64_t k = 0, a = -1;
+    detail::coast::SC P{}, Ph{};
+    int64_t cd = 0, sd = 0, e = 0;
+};
+inline CoastStart coast_start(fixed K, int64_t r0_q24, angle delta) noexcept {
     using namespace detail::coast;
-    const int64_t k = K.raw(), a = r0_q24, b = int64_t{D.raw()} << 8;
-    const int64_t max = int64_t{kCoastMaxRaw} << 8;
-    if (k < -65536 || k > 65536 || a < 0 || b < 0 || a > max || b > max) return false;
-    const SC P = sk_ck(k, a, 24), W = sk_ck(k, b, 24);
-    const int64_t cd = cos30(delta), sd = sin30(delta);
+    CoastStart s;
+    const int64_t k = K.raw(), a = r0_q24;
+    if (k < -65536 || k > 65536 || a < 0 || a > (int64_t{kCoastMaxRaw} << 8)) return s;
+    const int64_t ch = cos30(delta.half());  // cos(delta/2) >= 0
+    s.k = k, s.a = a, s.P = sk_ck(k, a, 24), s.Ph = sk_ck(k, a, 25);
+    s.cd = cos30(delta), s.sd = sin30(delta), s.e = rshift_round(ch * ch, 29);
+    return s;
+}
+
+// From the start at heading theta0 + delta, distance D along the geodesic (D in Q24: the world
+// keeps a coast's distance walked to finer than Q16.16 too). False (out untouched) outside the
+// domain above.
+inline bool coast_walk(const CoastStart& s, int64_t d_q24, CoastEnd& out) noexcept {
+    using namespace detail::coast;
+    const int64_t k = s.k, a = s.a, b = d_q24, cd = s.cd, sd = s.sd;
+    const SC& P = s.P;
+    if (a < 0 || b < 0 || b > (int64_t{kCoastMaxRaw} << 8)) return false;
+    const SC W = sk_ck(k, b, 24);
     const int64_t qy = mul(W.s, sd, 30);
     int64_t qx, qw;
     if (cd >= 0) {
@@ -193,20 +212,23 @@ inline bool coast_walk(fixed K, int64_t r0_q24, angle delta, fixed D, CoastEnd& 
         qx = rshift_round(P.s * W.c + P.c * sbcd, kF);
         qw = rshift_round(P.c * W.c - rshift_round(k * P.s, 16) * sbcd, kF);
     } else {
-        const int64_t ch = cos30(delta.half());  // cos(delta/2) >= 0
-        const int64_t e = rshift_round(ch * ch, 29);  // 2 cos^2(delta/2), Q30
-        const SC A = sk_ck(k, a - b, 24);             // S_K(a - b), C_K(a - b)
-        const int64_t sbe = mul(W.s, e, 30);
+        const SC A = sk_ck(k, a - b, 24);  // S_K(a - b), C_K(a - b)
+        const int64_t sbe = mul(W.s, s.e, 30);
         qx = A.s + mul(P.c, sbe, kF);
         qw = A.c - mul(rshift_round(k * P.s, 16), sbe, kF);
     }
-    const SC Ph = sk_ck(k, a, 25), Wh = sk_ck(k, b, 25);  // at a/2 and b/2
-    const int64_t m = rshift_round(k * mul(Ph.s, Wh.s, kF), 16);  // K s s', Q26
-    const int64_t tn = mul(m, sd, 30), td = mul(Ph.c, Wh.c, kF) - mul(m, cd, 30);
+    const SC Wh = sk_ck(k, b, 25);  // at b/2; s.Ph at a/2
+    const int64_t m = rshift_round(k * mul(s.Ph.s, Wh.s, kF), 16);  // K s s', Q26
+    const int64_t tn = mul(m, sd, 30), td = mul(s.Ph.c, Wh.c, kF) - mul(m, cd, 30);
     out.r24 = arc(k, hypot26(qx, qy), qw);
     out.bearing = atan2_precise(qy, qx);
     out.turn = atan2_precise(tn, td) * 2;
     return true;
+}
+
+// One walk: coast_start and coast_walk together.
+inline bool coast_walk(fixed K, int64_t r0_q24, angle delta, int64_t d_q24, CoastEnd& out) noexcept {
+    return coast_walk(coast_start(K, r0_q24, delta), d_q24, out);
 }
 
 }  // namespace noneuclid::fx

@@ -8,7 +8,9 @@
 //     centre (both are angles in the carried frame there). A coasting body (a = 0) keeps its
 //     speed exactly.
 //  2. the centre moves speed * dt along the geodesic in its direction of travel; the direction
-//     of travel, the facing and the acceleration's direction are carried along (geo::move).
+//     of travel, the facing and the acceleration's direction are carried along. A body walks
+//     its coast from where it began (world/coast.hpp), so the steps' roundings do not add up;
+//     Paper walks each step from the last (its engine::move).
 //  3. spin (plus the ship's turn while left/right is held) turns the facing.
 //  4. the limit circle: a centre past R reappears at (2R - r, theta + pi), its direction of
 //     travel and facing unchanged on screen (the same carried-frame angles). At K > 0 with
@@ -27,9 +29,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "fixed/coast.hpp"
 #include "geometry/geometry.hpp"
 #include "geometry/paper.hpp"
+#include "world/coast.hpp"
 #include "world/ranges.hpp"
 #include "world/scene.hpp"
 
@@ -61,67 +63,12 @@ inline bool parse_action(const std::string& s, Action& out) {
     return false;
 }
 
-// How a coast keeps its start: in fixed point the distance from O in Q24 and the angles as
-// binary angles (fx::angle: a turn adds exactly, and the limit circle's theta + pi and 2R - r
-// round nothing); in floating point the scalar itself.
-template <class T>
-struct CoastNumbers {
-    using length = T;
-    using angle = T;
-    static T length_of(T r) { return r; }
-    static T scalar(T r) { return r; }
-    static T reflect(T R, T r) { return T(2) * R - r > T(0) ? T(2) * R - r : T(0); }  // 2R - r, or 0
-    static T angle_of(T radians) { return radians; }
-    static T radians(T a) { return a; }
-    static T opposite(T a) { return geo::wrap_pi(a + geo::pi_v<T>); }
-};
-template <>
-struct CoastNumbers<fx::fixed> {
-    using length = int64_t;  // Q24
-    using angle = fx::angle;
-    static length length_of(fx::fixed r) { return int64_t{r.raw()} << 8; }
-    static fx::fixed scalar(length r) { return fx::fixed::from_raw(fx::detail::saturate32((r + 128) >> 8)); }
-    static length reflect(fx::fixed R, length r) {
-        const length twice = int64_t{R.raw()} << 9;
-        return twice - r > 0 ? twice - r : 0;
-    }
-    static angle angle_of(fx::fixed radians) { return angle::from_radians(radians); }
-    static fx::fixed radians(angle a) { return a.to_radians(); }
-    static angle opposite(angle a) { return a + angle::from_raw(angle::half_turn); }
-};
-
-// A coast: the straight stretch a body is on, walked from where it began. While nothing but
-// its straight motion acts on a body (the same velocity, the same K, no wrap at the limit
-// circle), its centre after distance D is one walk of D from the coast's start, not the last of
-// many short walks, so the steps' roundings do not add up: the fixed engine follows the exact
-// path (docs/accuracy.md, "The long run"). In fixed point the distance walked is exact (a sum of
-// mul_carry's steps), the walk is fx::coast_walk's, and the angles are binary angles.
-template <class T>
-struct Coast {
-    using Numbers = CoastNumbers<T>;
-    using Length = typename Numbers::length;
-    using Angle = typename Numbers::angle;
-    using Distance = std::conditional_t<std::is_same_v<T, float>, double, T>;
-    Length r0{};         // the start: distance from O, bearing, heading
-    Angle theta0{}, chi0{};
-    Distance walked{};   // the distance walked from the start
-    T turn{};            // the heading's turn over `walked`, as the facing was turned by it
-    T K{};               // the curvature it is walked in
-    Length next_r{};     // where the next coast starts (the last step's end, wrapped if it
-    Angle next_theta{}, next_chi{};  // was), in the coast's numbers
-    Polar<T> left;       // the centre and direction of travel the last step left: a body
-    T left_travel{};     // found elsewhere (a change of velocity, a reset) starts a new coast
-    bool on = false;     // a coast has been walked
-    bool fresh = false;  // the next step starts a new coast at next_* (after a wrap)
-};
-
 template <class T>
 struct alignas(64) Body {
     Polar<T> centre;
     T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
     std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
-    int64_t step_carry = 0;       // what speed * dt rounding left over (fixed point)
-    Coast<T> coast;
+    Coast<T> coast;               // the straight stretch it is on (world/coast.hpp)
     const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
 };
 
@@ -245,7 +192,7 @@ private:
     };
     // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
     void step_body(Body<T>& b, T dt, const Steering& steer) const {
-        using geo::dot2, geo::hypot, geo::mul_carry, geo::wrap_pi;  // and fx:: ones by ADL for fixed
+        using geo::dot2, geo::hypot, geo::wrap_pi;  // and fx:: ones by ADL for fixed
         using std::atan2, std::cos, std::sin;
         T a = b.accel, adir = b.accel_dir;
         if (b.desc->controlled && steer.thrusting) a = steer.thrust, adir = b.facing;
@@ -258,83 +205,29 @@ private:
         }
         bool walked = false;
         if (b.speed != T(0)) {
-            const T d = mul_carry(b.speed, dt, b.step_carry);  // no drift from rounding d
             if constexpr (Paper) {
+                const T d = b.speed * dt;  // Paper is double only: no rounding to carry
                 const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
                 b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
                 b.centre = p.centre;
                 b.travel = p.travel;
                 b.facing = p.facing;
             } else {
-                coast_step(b, d);
+                coast_step(K, b, dt);  // world/coast.hpp
                 walked = true;
             }
         }
         const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
         if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
-        Coast<T>& c = b.coast;
-        using N = typename Coast<T>::Numbers;
         if (b.centre.r > R) {  // the limit circle
             const T r = T(2) * R - b.centre.r;
-            if (walked) {  // the next coast starts here, (2R - r, theta + pi) in the coast's numbers
-                c.next_r = N::reflect(R, c.next_r), c.next_theta = N::opposite(c.next_theta), c.fresh = true;
-                b.centre = {N::scalar(c.next_r), N::radians(c.next_theta)};
-            } else {
+            if (walked)
+                b.centre = coast_wrap(b.coast, R);  // the same, in the coast's numbers
+            else
                 b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
-            }
         }
-        c.left = b.centre, c.left_travel = b.travel;
+        b.coast.left = b.centre, b.coast.left_travel = b.travel;
     }
-    // Step 2 along the body's coast (Coast). A new coast starts where the body is not where the
-    // last step left it, after a wrap, when K has changed, and when the coast would grow longer
-    // than kCoastLength (fx::coast_walk's domain); its first step is the plain walk of d.
-    void coast_step(Body<T>& b, T d) const {
-        using N = typename Coast<T>::Numbers;
-        using Distance = typename Coast<T>::Distance;
-        Coast<T>& c = b.coast;
-        const bool ours = c.on && c.left.r == b.centre.r && c.left.theta == b.centre.theta && c.left_travel == b.travel;
-        if (!ours) {
-            c.next_r = N::length_of(b.centre.r);
-            c.next_theta = N::angle_of(b.centre.theta), c.next_chi = N::angle_of(b.travel);
-        }
-        if (!ours || c.fresh || !(c.K == K) || c.walked + Distance(d) > Distance(kCoastLength)) {
-            c.r0 = c.next_r, c.theta0 = c.next_theta, c.chi0 = c.next_chi;
-            c.walked = Distance{}, c.turn = T(0), c.K = K, c.on = true, c.fresh = false;
-        }
-        c.walked = c.walked + Distance(d);
-        typename Coast<T>::Length r{};
-        typename Coast<T>::Angle theta{}, chi{};
-        T turn{};
-        coast_walk(c, r, theta, chi, turn);
-        const T facing = geo::wrap_pi(b.facing + (turn - c.turn));
-        b.accel_dir = geo::wrap_pi(b.accel_dir + (facing - b.facing));
-        b.facing = facing;
-        b.centre = {N::scalar(r), N::radians(theta)};
-        b.travel = N::radians(chi);
-        c.turn = turn, c.next_r = r, c.next_theta = theta, c.next_chi = chi;
-    }
-    // Where the coast is after c.walked: distance, bearing and heading in the coast's numbers,
-    // and the heading's turn since the start.
-    void coast_walk(const Coast<T>& c, typename Coast<T>::Length& r, typename Coast<T>::Angle& theta,
-                    typename Coast<T>::Angle& chi, T& turn) const {
-        if constexpr (std::is_same_v<T, fx::fixed>) {
-            fx::CoastEnd e;
-            if (fx::coast_walk(K, c.r0, c.chi0 - c.theta0, c.walked, e)) {
-                r = e.r24, theta = c.theta0 + e.bearing, chi = c.chi0 + e.turn, turn = e.turn.to_radians();
-                return;
-            }
-            // Outside its domain (a world built with R > sqrt 10, or K beyond +-1): geo::walk.
-            using N = typename Coast<T>::Numbers;
-            const Polar<T> start{N::scalar(c.r0), c.theta0.to_radians()};
-            const geo::Walk<T> w = geo::walk(K, start, c.chi0.to_radians(), c.walked);
-            r = N::length_of(w.end.r), theta = N::angle_of(w.end.theta), chi = N::angle_of(w.heading), turn = w.turn;
-        } else {
-            const geo::Walk<T> w = geo::walk(K, Polar<T>{c.r0, c.theta0}, c.chi0, T(c.walked));
-            r = w.end.r, theta = w.end.theta, chi = w.heading, turn = w.turn;
-        }
-    }
-    static constexpr double kCoastLength = 3;  // within fx::coast_walk's sqrt 10
-
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {
         Body<T> b;

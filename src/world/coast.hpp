@@ -1,0 +1,146 @@
+// A body's coast: the straight stretch it is on, walked from where it began (docs/accuracy.md,
+// "The long run"). While nothing but its own motion moves a body (the same direction of travel,
+// the same K, no wrap at the limit circle), its centre after distance D is one walk of D from
+// the coast's start, not the last of many short walks, so the steps' roundings do not add up.
+// In fixed point the start is kept in finer numbers than Q16.16 (r in Q24, the angles as binary
+// angles: a turn adds exactly, and the limit circle's theta + pi and 2R - r round nothing), the
+// distance walked is the exact sum of the steps' speed * dt, and the walk is fx::coast_walk's.
+// World::step_body moves every engine's bodies but Paper's this way.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "fixed/coast.hpp"
+#include "geometry/geometry.hpp"
+
+namespace noneuclid::world {
+
+// The longest coast, in world units: within fx::coast_walk's domain (sqrt 10).
+inline constexpr int kCoastLength = 3;
+
+// How a coast keeps its numbers: in floating point the scalar itself (float's distance walked
+// in double, where its steps add exactly); in fixed point r in Q24, the angles as binary angles
+// and the distance walked in Q32, where speed * dt is exact.
+template <class T>
+struct CoastNumbers {
+    using length = T;
+    using angle = T;
+    using distance = std::conditional_t<std::is_same_v<T, float>, double, T>;
+    static T length_of(T r) { return r; }
+    static T scalar(T r) { return r; }
+    static T reflect(T R, T r) { return T(2) * R - r > T(0) ? T(2) * R - r : T(0); }  // 2R - r, or 0
+    static T angle_of(T radians) { return radians; }
+    static T radians(T a) { return a; }
+    static T opposite(T a) { return geo::wrap_pi(a + geo::pi_v<T>); }
+    static distance step(T speed, T dt) { return distance(speed) * distance(dt); }
+    static distance longest() { return distance(kCoastLength); }
+    struct start {};  // what every walk of a coast shares: nothing here
+    static start begin(T, T, T, T) { return {}; }
+};
+template <>
+struct CoastNumbers<fx::fixed> {
+    using length = int64_t;    // Q24
+    using angle = fx::angle;
+    using distance = int64_t;  // Q32
+    static length length_of(fx::fixed r) { return int64_t{r.raw()} << 8; }
+    static fx::fixed scalar(length r) { return fx::fixed::from_raw(fx::detail::saturate32((r + 128) >> 8)); }
+    static length reflect(fx::fixed R, length r) {
+        const length twice = int64_t{R.raw()} << 9;
+        return twice - r > 0 ? twice - r : 0;
+    }
+    static angle angle_of(fx::fixed radians) { return angle::from_radians(radians); }
+    static fx::fixed radians(angle a) { return a.to_radians(); }
+    static angle opposite(angle a) { return a + angle::from_raw(angle::half_turn); }
+    static distance step(fx::fixed speed, fx::fixed dt) { return int64_t{speed.raw()} * dt.raw(); }
+    static distance longest() { return int64_t{kCoastLength} << 32; }
+    using start = fx::CoastStart;
+    static start begin(fx::fixed K, length r0, angle theta0, angle chi0) {
+        return fx::coast_start(K, r0, chi0 - theta0);
+    }
+};
+
+template <class T>
+struct Coast {
+    using Numbers = CoastNumbers<T>;
+    using Length = typename Numbers::length;
+    using Angle = typename Numbers::angle;
+    using Distance = typename Numbers::distance;
+    Length r0{};         // the start: distance from O, bearing, heading
+    Angle theta0{}, chi0{};
+    [[no_unique_address]] typename Numbers::start start{};  // what its walks share
+    Distance walked{};   // the distance walked from the start
+    T turn{};            // the heading's turn over `walked`, as the facing was turned by it
+    T K{};               // the curvature it is walked in
+    Length next_r{};     // where the next coast starts (the last step's end, wrapped if it
+    Angle next_theta{}, next_chi{};  // was), in the coast's numbers
+    geo::Polar<T> left;  // the centre and direction of travel the last step left: a body
+    T left_travel{};     // found elsewhere (a change of velocity, a reset) starts a new coast
+    bool on = false;     // a coast has been walked
+    bool fresh = false;  // the next step starts a new coast at next_* (after a wrap)
+};
+
+// Where coast c is after c.walked at K: distance, bearing and heading in the coast's numbers,
+// and the heading's turn since the start.
+template <class T>
+void walk_coast(T K, const Coast<T>& c, typename Coast<T>::Length& r, typename Coast<T>::Angle& theta,
+                typename Coast<T>::Angle& chi, T& turn) {
+    if constexpr (std::is_same_v<T, fx::fixed>) {
+        fx::CoastEnd e;
+        if (fx::coast_walk(c.start, (c.walked + 128) >> 8, e)) {
+            r = e.r24, theta = c.theta0 + e.bearing, chi = c.chi0 + e.turn, turn = e.turn.to_radians();
+            return;
+        }
+        // Outside its domain (a step longer than sqrt 10, or K beyond +-1): geo::walk.
+        using N = typename Coast<T>::Numbers;
+        const geo::Polar<T> start{N::scalar(c.r0), c.theta0.to_radians()};
+        const fx::fixed D = fx::fixed::from_raw(fx::detail::saturate32((c.walked + (int64_t{1} << 15)) >> 16));
+        const geo::Walk<T> w = geo::walk(K, start, c.chi0.to_radians(), D);
+        r = N::length_of(w.end.r), theta = N::angle_of(w.end.theta), chi = N::angle_of(w.heading), turn = w.turn;
+    } else {
+        const geo::Walk<T> w = geo::walk(K, geo::Polar<T>{c.r0, c.theta0}, c.chi0, T(c.walked));
+        r = w.end.r, theta = w.end.theta, chi = w.heading, turn = w.turn;
+    }
+}
+
+// Step 2 of World::step_body along body b's coast: speed * dt further at K. A new coast starts
+// where the body is not where the last step left it, after a wrap, when K has changed, and when
+// the coast would grow longer than kCoastLength; its first step is the plain walk of the step.
+template <class T, class Body>
+void coast_step(T K, Body& b, T dt) {
+    using N = CoastNumbers<T>;
+    Coast<T>& c = b.coast;
+    const bool ours = c.on && c.left.r == b.centre.r && c.left.theta == b.centre.theta && c.left_travel == b.travel;
+    if (!ours) {
+        c.next_r = N::length_of(b.centre.r);
+        c.next_theta = N::angle_of(b.centre.theta), c.next_chi = N::angle_of(b.travel);
+    }
+    const typename N::distance step = N::step(b.speed, dt);
+    if (!ours || c.fresh || !(c.K == K) || c.walked + step > N::longest()) {
+        c.r0 = c.next_r, c.theta0 = c.next_theta, c.chi0 = c.next_chi;
+        c.start = N::begin(K, c.r0, c.theta0, c.chi0);
+        c.walked = typename N::distance{}, c.turn = T(0), c.K = K, c.on = true, c.fresh = false;
+    }
+    c.walked = c.walked + step;
+    typename N::length r{};
+    typename N::angle theta{}, chi{};
+    T turn{};
+    walk_coast(K, c, r, theta, chi, turn);
+    const T facing = geo::wrap_pi(b.facing + (turn - c.turn));
+    b.accel_dir = geo::wrap_pi(b.accel_dir + (facing - b.facing));
+    b.facing = facing;
+    b.centre = {N::scalar(r), N::radians(theta)};
+    b.travel = N::radians(chi);
+    c.turn = turn, c.next_r = r, c.next_theta = theta, c.next_chi = chi;
+}
+
+// The limit circle's wrap of a centre that has just walked its coast: the next coast starts at
+// (2R - r, theta + pi) in the coast's numbers; returns that centre.
+template <class T>
+geo::Polar<T> coast_wrap(Coast<T>& c, T R) {
+    using N = CoastNumbers<T>;
+    c.next_r = N::reflect(R, c.next_r), c.next_theta = N::opposite(c.next_theta), c.fresh = true;
+    return {N::scalar(c.next_r), N::radians(c.next_theta)};
+}
+
+}  // namespace noneuclid::world
