@@ -115,10 +115,15 @@ void stress(Scene& s, const SceneParams& p) {
     for (int i = 0; i < p.bodies; ++i) {
         char name[24];
         std::snprintf(name, sizeof name, "body%d", i);
-        SceneBody b = polygon(name, p.vertices, 0.1 + 0.2 * next(), 360 * next(),
-                              {static_cast<uint8_t>(80 + 175 * next()), static_cast<uint8_t>(80 + 175 * next()), 200});
+        // The draws in a fixed order, one statement each: the order in which a call's arguments
+        // are evaluated is the compiler's choice, and differs between x86-64 and aarch64. This
+        // is the order x86-64's g++ took, so the scene is the one the figures were made with.
+        const double red = next(), green = next(), phase = next(), size = next();
+        SceneBody b = polygon(name, p.vertices, 0.1 + 0.2 * size, 360 * phase,
+                              {static_cast<uint8_t>(80 + 175 * red), static_cast<uint8_t>(80 + 175 * green), 200});
         b.tessellation = p.tessellation;
-        s.bodies.push_back(place(b, 2.9 * next(), 360 * next(), 360 * next(), 0.1 + 0.3 * next(), 360 * next(), 60 * next() - 30));
+        const double spin = next(), dir = next(), speed = next(), facing = next(), theta = next(), r = next();
+        s.bodies.push_back(place(b, 2.9 * r, 360 * theta, 360 * facing, 0.1 + 0.3 * speed, 360 * dir, 60 * spin - 30));
     }
 }
 

@@ -271,13 +271,14 @@ TEST(Coast, DoubleWithin1e8OfTheExactPathForAHundredThousandSteps) {
 // geodesics that start a hair apart part like e^distance, so a path crossing the disc from the
 // limit circle and back magnifies each coast's rounding by up to e^(2R); the drift grows with
 // the wraps until a step ends on the other side of R from the exact path's step, and from that
-// wrap on the two are different paths (the distance jumps to about 2R). Float does so between
-// 10^4 and 10^5 steps. So: within 1e-3 for 10^5 steps at K = 0 and +1, within 0.01 for 10^4 at
+// wrap on the two are different paths (the distance jumps to about 2R). Where float does so
+// depends on its arithmetic: at step 15,570 on x86-64, at 7,210 on aarch64 (whose compiler fuses
+// multiplies and adds). So: within 1e-3 for 10^5 steps at K = 0 and +1, within 0.01 for 10^3 at
 // K = -1, and for 10^5 steps at K = -1 only a finite position inside the limit circle.
 TEST(Coast, FloatWithinAThousandthForAHundredThousandStepsAtKZeroAndOneAndFiniteAfterParting) {
     check_drift<float>(0, {10000, 100000}, 1e-3);
     check_drift<float>(1, {10000, 100000}, 1e-3);
-    check_drift<float>(-1, {10000}, 0.01);
+    check_drift<float>(-1, {1000}, 0.01);
     measured<float>(-1, {100000});
 }
 
