@@ -260,25 +260,23 @@ private:
             if (i_ + 1 < text_.size() && (text_[i_ + 1] == '\n' || text_[i_ + 1] == '\r'))
                 line_continuation_ = true, after_escape_ = false;
         } else if (c == '"') {
-            const std::size_t n = run_of('"');
-            if (state_ == basic)
-                state_ = outside, advance = 1;
-            else if (n >= 3)
-                state_ = outside, advance = n;
-            else
-                advance = n;
-            if (state_ == outside)
-                before_ = '"';
+            closing_quotes('"', advance);
         }
         return true;
     }
 
     // In a literal string, one-line or multi-line: only the closing quotes matter.
     void literal_char(char32_t c, std::size_t& advance) {
-        if (c != '\'')
-            return;
-        const std::size_t n = run_of('\'');
-        if (state_ == literal)
+        if (c == '\'')
+            closing_quotes('\'', advance);
+    }
+
+    // A run of the string's quote `q`: a one-line string ends at the first; a multi-line one
+    // at a run of three or more (the quotes before the last three are its content), and a run
+    // of one or two is content.
+    void closing_quotes(char q, std::size_t& advance) {
+        const std::size_t n = run_of(q);
+        if (state_ == basic || state_ == literal)
             state_ = outside, advance = 1;
         else if (n >= 3)
             state_ = outside, advance = n;
