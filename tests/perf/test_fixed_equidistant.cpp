@@ -11,16 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "record.hpp"
 #include "render/draw_world.hpp"
 
-// A measurement for --gtest_output=xml (RecordProperty), formatted like printf.
-template <class... A>
-void noneuclid_test_record(const char* format, A... args) {
-    char text[512];
-    std::snprintf(text, sizeof text, format, args...);
-    static int n = 0;
-    ::testing::Test::RecordProperty("measured_" + std::to_string(++n), text);
-}
 
 namespace {
 
