@@ -28,6 +28,14 @@ intact() {
     if ls -a | grep -q "^\.$2\."; then fail "$1: a temporary file is left: $(ls -a | grep "^\.$2\.")"; return; fi
     pass "$1: $2 untouched, nothing left behind"
 }
+# stopped NAME PID SIGNAL STDERR_PATTERN: sends SIGNAL to the background command PID (its stderr
+# in err.txt), which must exit 1 with a line matching the pattern.
+stopped() {
+    local rc=0
+    kill "-$3" "$2"
+    wait "$2" || rc=$?
+    if [ "$rc" = 1 ] && grep -q "$4" err.txt; then pass "$1"; else fail "$1: exit $rc: $(cat err.txt)"; fi
+}
 
 expect "dump --frames 0 > /dev/full" 1 "cannot write the dump to standard output (No space left on device)" \
     sh -c "\"$noneuclid\" dump --frames 0 > /dev/full"
@@ -45,26 +53,14 @@ intact "render over the file-size limit" pic.png
 "$noneuclid" render --scene stress --frames 100000 --out pic.png 2> err.txt &
 pid=$!
 sleep 1
-kill -TERM "$pid"
-rc=0; wait "$pid" || rc=$?
-if [ "$rc" = 1 ] && grep -q "stopped by signal 15 after .* frames; pic.png is left as it was" err.txt; then
-    pass "SIGTERM while the world runs"
-else
-    fail "SIGTERM while the world runs: exit $rc: $(cat err.txt)"
-fi
+stopped "SIGTERM while the world runs" "$pid" TERM "stopped by signal 15 after .* frames; pic.png is left as it was"
 intact "SIGTERM while the world runs" pic.png
 
 # A picture big enough to take seconds to write; the signal comes while it is written.
 "$noneuclid" render --scene fig1 --frames 0 --size 8192x8192 --format rgb565 --out pic.png 2> err.txt &
 pid=$!
 for _ in $(seq 400); do ls -a | grep -q '^\.pic\.png\.' && break; sleep 0.05; done
-kill -INT "$pid"
-rc=0; wait "$pid" || rc=$?
-if [ "$rc" = 1 ] && grep -q "stopped by signal 2 while writing pic.png; it is left as it was" err.txt; then
-    pass "SIGINT while the PNG is written"
-else
-    fail "SIGINT while the PNG is written: exit $rc: $(cat err.txt)"
-fi
+stopped "SIGINT while the PNG is written" "$pid" INT "stopped by signal 2 while writing pic.png; it is left as it was"
 intact "SIGINT while the PNG is written" pic.png
 
 echo "an earlier recording" > rec.txt && cp rec.txt rec.txt.good

@@ -40,19 +40,22 @@ fi
 window() {  # the window's id, once it is mapped
     timeout 10 xdotool search --sync --name '^noneuclid$' | head -n 1
 }
+wait_app() {  # WHAT: waits for the program started in the background; a failure ends the test
+    local status=0
+    wait "$app_pid" || status=$?
+    app_pid=
+    if [ "$status" -ne 0 ]; then
+        echo "x11_test: $1 exited with status $status" >&2
+        exit 1
+    fi
+}
 
 # 1. 600 frames at 60 fps: about 10 s for the keys to arrive, even on a loaded machine.
 timeout 60 "$noneuclid" run --display x11 --scene "$scene" --size 480x360 --frames 600 \
     --screenshot "$tmp/x11.png" &
 app_pid=$!
 timeout 10 xdotool key --window "$(window)" 1 p
-status=0
-wait "$app_pid" || status=$?
-app_pid=
-if [ "$status" -ne 0 ]; then
-    echo "x11_test: noneuclid run exited with status $status" >&2
-    exit 1
-fi
+wait_app "noneuclid run"
 timeout 60 "$noneuclid" render --scene "$scene" --size 480x360 --curvature -1 --projection stereographic \
     --hud --legend keys --out "$tmp/render.png"
 "$png_diff" "$tmp/x11.png" "$tmp/render.png" --exact
@@ -70,13 +73,7 @@ sleep 0.3
 timeout 10 xdotool key --window "$win" h
 sleep 0.3
 timeout 10 xdotool key --window "$win" Escape
-status=0
-wait "$app_pid" || status=$?
-app_pid=
-if [ "$status" -ne 0 ]; then
-    echo "x11_test: noneuclid run (recording) exited with status $status" >&2
-    exit 1
-fi
+wait_app "noneuclid run (recording)"
 for want in "press thrust" "release thrust" "press spherical" "tap hud" "legend keys"; do
     grep -q "$want" "$tmp/run.rec" || { echo "x11_test: the recording has no '$want':" >&2; cat "$tmp/run.rec" >&2; exit 1; }
 done
