@@ -25,13 +25,13 @@ double ref_ASf(double u) {
     const double s = std::sqrt(std::fabs(u));
     return u > 0 ? std::asin(s) / s : std::asinh(s) / s;
 }
-
-// ---- the fixed-point functions, seen from double ----------------------------------------
 double ref_ATf(double u) {
     if (std::fabs(u) < 1e-4) return 1 - u / 3 + u * u / 5;
     const double s = std::sqrt(std::fabs(u));
     return u > 0 ? std::atan(s) / s : std::atanh(s) / s;
 }
+
+// ---- the fixed-point functions, seen from double ----------------------------------------
 
 double q_fixed(double x) { return fixed(x).to_double(); }
 double q_angle(double x) { return angle::from_radians(x).to_radians_double(); }
