@@ -48,10 +48,11 @@ bool body_within_ranges(const SceneBody& b, double R, std::string& why) {
             }
     const double reach = body_reach(b, R);
     if (reach > Ranges::kReach) {
+        const bool moves = body_moves(b);
         why = name + "its vertices could reach " + number(reach) + " from O ("
-              + (body_moves(b) ? "limit_radius" : "its distance r")
+              + (moves ? "limit_radius" : "its distance r")
               + " plus its largest rho), past the engines' reach of 2 pi (6.283): make the body smaller or "
-              + (body_moves(b) ? "limit_radius" : "r") + " lower";
+              + (moves ? "limit_radius" : "r") + " lower";
         return false;
     }
     return true;
