@@ -42,7 +42,7 @@ bool game_scene(const char* name, world::Scene& scene, int& bullets) {
     g.bullets = bullets;
     g.bullet_cooldown = g.bullet_range / g.bullet_speed / bullets;
     g.invulnerable = 1e6;
-    g.levels = {scene.curvature};
+    g.levels.clear();  // K stays the scene's (or what K= sets)
     std::string why;
     return world::add_game_slots(scene, why);
 }
@@ -141,6 +141,10 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     std::vector<std::size_t> counts;
     for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
         const auto& b = wd.bodies[i];
+        if (!render::body_shown(b, o)) {  // (a game's spare slots)
+            counts.push_back(0);
+            continue;
+        }
         std::vector<render::SubPoint> p(render::body_point_capacity(b));
         const std::size_t k =
             render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
@@ -154,7 +158,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         else if (stage == "backdrop") render::draw_backdrop(c, m, wd.R, o);
         else if (stage == "geometry") {
             for (std::size_t b = 0; b < wd.bodies.size(); ++b)
-                check += render::body_screen_points(wd, wd.bodies[b], scratch.shapes[b], m, o, scratch.vertices.data(),
+                if (render::body_shown(wd.bodies[b], o))
+                    check += render::body_screen_points(wd, wd.bodies[b], scratch.shapes[b], m, o, scratch.vertices.data(),
                                                     scratch.vectors.data(), scratch.points.data());
         } else if (stage == "raster") {
             std::size_t at = 0;
