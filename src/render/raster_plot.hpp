@@ -16,7 +16,8 @@ namespace {
 static_assert(std::endian::native == std::endian::little, "pixel words are stored little-endian");
 
 // Where pixels go: into a canvas (one instantiation per pixel size, writing whole words, with
-// integer blends for the two fast formats), or to a visitor (tests, counting).
+// integer blends for RGB565 and for 32-bit words of byte channels, xrgb8888 and the browser's
+// rgba8888 alike), or to a visitor (tests, counting).
 template <int Bpp>
 struct CanvasSink {
     static constexpr int bytes = Bpp;
@@ -26,9 +27,12 @@ struct CanvasSink {
     uint8_t* base;
     std::ptrdiff_t stride;
     bool fast565, fast8888;
+    uint32_t rs, gs, bs, keep;  // fast8888: the channels' shifts, and the other bits of a pixel
     CanvasSink(const Canvas& canvas, Rgb col)
         : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
-          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().is_xrgb8888()) {}
+          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().byte_channels()),
+          rs(canvas.format().red.offset), gs(canvas.format().green.offset), bs(canvas.format().blue.offset),
+          keep(fast8888 ? ~(0xFFu << rs | 0xFFu << gs | 0xFFu << bs) : 0) {}
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
@@ -57,9 +61,9 @@ struct CanvasSink {
                 uint32_t d;
                 std::memcpy(&d, p, 4);
                 const uint32_t a = static_cast<uint32_t>(alpha);
-                const uint32_t r = mix8(color.r, (d >> 16) & 0xFF, a), g = mix8(color.g, (d >> 8) & 0xFF, a),
-                               b = mix8(color.b, d & 0xFF, a);
-                const uint32_t out = (d & 0xFF000000u) | r << 16 | g << 8 | b;
+                const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
+                               b = mix8(color.b, (d >> bs) & 0xFF, a);
+                const uint32_t out = (d & keep) | r << rs | g << gs | b << bs;
                 std::memcpy(p, &out, 4);
                 return;
             }
