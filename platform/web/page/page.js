@@ -226,15 +226,14 @@
     if (kTarget === null) return;
     const K = mod._nw_curvature();
     const want = kTarget > K ? control.curvature_up : kTarget < K ? control.curvature_down : -1;
-    if (want === kHeld) return;
-    if (kHeld >= 0) {  // reached or passed: done
+    if (kHeld >= 0 && want !== kHeld) {  // reached or passed: done
       input(kHeld, false);
       kTarget = null, kHeld = -1;
-      return;
+    } else if (kHeld < 0) {
+      if (want >= 0) input(want, true);
+      kHeld = want;
+      if (want < 0) kTarget = null;
     }
-    if (want >= 0) input(want, true);
-    kHeld = want;
-    if (want < 0) kTarget = null;
   }
 
   function wireControls() {
