@@ -27,12 +27,12 @@ struct CanvasSink {
     uint8_t* base;
     std::ptrdiff_t stride;
     bool fast565, fast8888;
-    uint32_t rs, gs, bs, keep;  // fast8888: the channels' shifts, and the other bits of a pixel
+    uint32_t rs, gs, bs, fill;  // fast8888: the channels' shifts, and the bits pack() sets besides
     CanvasSink(const Canvas& canvas, Rgb col)
         : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
           fast565(canvas.format().is_rgb565()), fast8888(canvas.format().byte_channels()),
           rs(canvas.format().red.offset), gs(canvas.format().green.offset), bs(canvas.format().blue.offset),
-          keep(fast8888 ? ~(0xFFu << rs | 0xFFu << gs | 0xFFu << bs) : 0) {}
+          fill(canvas.format().opaque_bits()) {}
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
@@ -48,10 +48,10 @@ struct CanvasSink {
             p[0] = static_cast<uint8_t>(word), p[1] = static_cast<uint8_t>(word >> 8), p[2] = static_cast<uint8_t>(word >> 16);
         }
     }
-    // dst + (src - dst) * a / 255 per channel; a / 255 as (a * 257 + 128) >> 16 over 8-bit values.
+    // dst + (src - dst) * a / 255 per channel, rounded to the nearest level (half away from zero):
+    // Canvas::blend's formula, so that every format holds the same colours, and never beyond src.
     static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
-        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d);
-        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((diff * static_cast<int32_t>(a) * 257 + (diff >= 0 ? 32768 : -32768)) >> 16));
+        return s >= d ? d + ((s - d) * a + 127) / 255 : d - ((d - s) * a + 127) / 255;
     }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
@@ -63,7 +63,7 @@ struct CanvasSink {
                 const uint32_t a = static_cast<uint32_t>(alpha);
                 const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
                                b = mix8(color.b, (d >> bs) & 0xFF, a);
-                const uint32_t out = (d & keep) | r << rs | g << gs | b << bs;
+                const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
                 std::memcpy(p, &out, 4);
                 return;
             }
