@@ -15,6 +15,18 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "pixel words are stored little-endian");
 
+// x / 255 rounded to the nearest whole number, for x <= 255 * 255, by shifts.
+constexpr uint32_t div255_rounded(uint32_t x) {
+    x += 128;
+    return (x + (x >> 8)) >> 8;
+}
+constexpr bool div255_exact() {
+    for (uint32_t x = 0; x <= 255 * 255; ++x)
+        if (div255_rounded(x) != (x + 127) / 255) return false;
+    return true;
+}
+static_assert(div255_exact(), "div255_rounded is x / 255 rounded for every product of two 8-bit values");
+
 // Where pixels go: into a canvas (one instantiation per pixel size, writing whole words, with
 // integer blends for RGB565 and for 32-bit words of byte channels, xrgb8888 and the browser's
 // rgba8888 alike), or to a visitor (tests, counting).
@@ -49,9 +61,12 @@ struct CanvasSink {
         }
     }
     // dst + (src - dst) * a / 255 per channel, rounded to the nearest level (half away from zero):
-    // Canvas::blend's formula, so that every format holds the same colours, and never beyond src.
+    // Canvas::blend's result, so that every format holds the same colours, and never beyond src.
+    // Without a branch or a division: |src - dst| by its sign mask m, then div255_rounded.
     static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
-        return s >= d ? d + ((s - d) * a + 127) / 255 : d - ((d - s) * a + 127) / 255;
+        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d), m = diff >> 31;
+        const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
+        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
     }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
