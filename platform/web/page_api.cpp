@@ -54,6 +54,8 @@ void refuse_options(const app::Options& o) {
         app::usage_error("--record is not for a web page: it records every run; take the recording from its link.");
     if (!o.screenshot.empty())
         app::usage_error("--screenshot is not for a web page: save the picture from the page (right-click it).");
+    if (!o.scores.empty() && o.scores != "none")
+        app::usage_error("--scores is not for a web page: it keeps no files (--best sets the high score it shows).");
     if (o.threads != d.threads) app::usage_error("--threads is not for a web page: it draws on one thread.");
     if (o.fps != d.fps) app::usage_error("--fps is not for a web page: it draws at the screen's refresh rate.");
 }

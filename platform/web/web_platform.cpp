@@ -37,4 +37,9 @@ bool AtomicFile::commit(std::string& error) {
 
 void AtomicFile::abort() {}
 
+std::string state_file(const std::string&, std::string& error) {
+    error = "a web page keeps no files between runs";
+    return {};
+}
+
 }  // namespace noneuclid::platform
