@@ -2,12 +2,15 @@
 // The web page in a real browser: headless Chromium (Debian's), driven through the DevTools
 // protocol (cdp.mjs), loads the page from a local server (python3 -m http.server) and:
 //  1. plays tests/web/flight.rec from its URL on each engine, and on the fixed one anti-aliased
-//     and in RGB565 with anti-aliasing: the canvas, read back as PNG, equals `noneuclid render --actions` of the
-//     same file, pixel for pixel;
+//     and in RGB565 with anti-aliasing: the canvas, read back as PNG, equals `noneuclid render
+//     --actions` of the same file, pixel for pixel;
 //  2. is flown live with key presses, its K slider and projection menu, and touch taps on its
-//     buttons; the run's recording holds them, and `noneuclid render --actions` of it equals the canvas pixel for pixel, while the
-//     same recording without the thrust gives another picture (the comparison can fail);
-//  3. says one sentence for a bad option and for a scene file it cannot load.
+//     buttons; the run's recording holds them, `noneuclid render --actions` of it equals the
+//     canvas pixel for pixel, and the same recording without the thrust gives another picture
+//     (the comparison can fail). In the game (the asteroids scene) Space starts it and the
+//     fire button, held, fires: the same holds, and without the button's shots it differs;
+//  3. runs a pasted scene file, whose recording replays on the file, pixel for pixel;
+//  4. says one sentence for a bad option, a scene file it cannot load and a bad pasted one.
 // Every page that should work must also leave its console without an error.
 //   node web_test.mjs --noneuclid N --png-diff P --page DIR --work DIR [--chromium PATH]
 import {execFileSync} from 'node:child_process';
@@ -202,8 +205,73 @@ await check('keys and touch taps: the recording of the live run, replayed by ren
   await page.close();
 });
 
-// ---- 3. bad input: one sentence on the page ---------------------------------------------------
-await check('a bad option and a missing scene file: one sentence each on the page', async () => {
+// ---- 2b. the game: fire from the keyboard and from the touch button ------------------------------
+await check('the game: Space starts it, the fire button fires; the replay of the recording equals the canvas', async () => {
+  const {page, started} = await openPage('scene=asteroids&size=400x300');
+  expect(started === true, `the page did not start: ${(await page.evaluate('window.noneuclid.state()')).message}`);
+  await waitFrames(page, 5);
+  await page.key('keyDown', ' ', 'Space', 32);  // "press fire": the game begins
+  await waitFrames(page, 2);
+  await page.key('keyUp', ' ', 'Space', 32);
+  await waitFrames(page, 50);                    // the ship is there
+  const at = await page.evaluate(`(() => {
+    const b = document.querySelector('#touch button[data-control=fire]');
+    if (!b) return null;
+    const r = b.getBoundingClientRect();
+    return {x: r.x + r.width / 2, y: r.y + r.height / 2};
+  })()`);
+  expect(at, 'the page has no fire button');
+  await page.touch('touchStart', at.x, at.y);    // held: a shot every bullet_cooldown
+  await waitFrames(page, 30);
+  await page.touch('touchEnd', at.x, at.y);
+  await waitFrames(page, 15);
+  await page.evaluate('window.noneuclid.stop()');
+  const shot = path.join(work, 'game-page.png'), recording = path.join(work, 'game.rec');
+  await canvasPng(page, shot);
+  const text = await page.evaluate('window.noneuclid.recording()');
+  fs.writeFileSync(recording, text);
+  const fires = text.match(/^\S+ (press|release) fire\n/gm) || [];
+  expect(fires.length === 4, `the recording does not hold the key's and the button's fire:\n${text}`);
+  render(['--actions', recording, '--out', path.join(work, 'game-render.png')]);
+  const diff = pngDiff(shot, path.join(work, 'game-render.png'));
+  expect(diff.status === 0, `the page differs from the replay of its recording: ${diff.out}`);
+  // Without the button's shots (the game still begun by the key), the picture differs.
+  const without = path.join(work, 'game-without-shots.rec');
+  fs.writeFileSync(without, text.replace(fires[2], '').replace(fires[3], ''));
+  render(['--actions', without, '--out', path.join(work, 'game-without.png')]);
+  expect(pngDiff(shot, path.join(work, 'game-without.png')).status === 1,
+         'the replay without the fire button\'s shots should differ from the page, and does not');
+  expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+  await page.close();
+});
+
+// ---- 3. a pasted scene file ----------------------------------------------------------------------
+const lesson = path.join(here, '..', 'world', 'data', 'lesson.toml');
+await check('a pasted scene file runs, and its recording replays on the file', async () => {
+  // Without the HUD, which names the scene by its path (/pasted.toml in the page).
+  const {page, started} = await openPage('scene=kiosk&size=320x240&hud=off');
+  expect(started === true, 'the page did not start');
+  await page.evaluate(`(() => {
+    document.getElementById('scene-text').value = ${JSON.stringify(fs.readFileSync(lesson, 'utf8'))};
+    document.getElementById('run-text').click();
+  })()`);
+  await waitFrames(page, 40);
+  await page.evaluate('window.noneuclid.stop()');
+  const shot = path.join(work, 'pasted-page.png'), recording = path.join(work, 'pasted.rec');
+  await canvasPng(page, shot);
+  const text = await page.evaluate('window.noneuclid.recording()');
+  expect(text.includes('scene /pasted.toml\n'), `the recording does not name the pasted scene:\n${text}`);
+  fs.writeFileSync(recording, text.replace('scene /pasted.toml\n', `scene ${lesson}\n`));
+  const replay = path.join(work, 'pasted-render.png');
+  render(['--actions', recording, '--out', replay]);
+  const diff = pngDiff(shot, replay);
+  expect(diff.status === 0, `the page differs from render of the scene file: ${diff.out}`);
+  expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+  await page.close();
+});
+
+// ---- 4. bad input: one sentence on the page ---------------------------------------------------
+await check('a bad option, a missing scene file and a bad pasted scene: one sentence each on the page', async () => {
   for (const [query, want] of [['curvature=7', '--curvature'], ['engine=fast', '--engine must be'],
                                ['scene=lesson.toml', 'lesson.toml']]) {
     const {page, started} = await openPage(query);
@@ -212,6 +280,14 @@ await check('a bad option and a missing scene file: one sentence each on the pag
     expect(message.includes(want), `?${query}: the message '${message}' does not mention '${want}'`);
     await page.close();
   }
+  const {page} = await openPage('scene=kiosk');
+  await page.evaluate(`(() => {
+    document.getElementById('scene-text').value = 'curvature = -1.0\\n[[body]]\\nname = 5\\n';
+    document.getElementById('run-text').click();
+  })()`);
+  const message = (await page.evaluate('window.noneuclid.state()')).message;
+  expect(/pasted\.toml:3:\d+: /.test(message), `a bad pasted scene: the message '${message}' names no line and column`);
+  await page.close();
 });
 
 clearTimeout(watchdog);
