@@ -110,10 +110,10 @@ void kiosk(Scene& s) {
 // the first level, hyperbolic on the second, spherical on the third, and round again.
 void asteroids(Scene& s) {
     s.curvature = 0;
-    axis_grid(s);
+    std::string unused;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, {45, 58, 80}, unused);  // dimmer than the kiosk's: the game is in front
     s.bodies.push_back(place(ship(), 0, 0, 90, 0, 90, 0));
     s.game.on = true;
-    std::string unused;
     add_game_slots(s, unused);  // the kiosk's ship and the default settings always fit
 }
 void stress(Scene& s, const SceneParams& p) {
