@@ -87,6 +87,12 @@ private:
     std::FILE* file_ = nullptr;
 };
 
+// The path of a file the program keeps between runs (the game's high scores): in the
+// service's state directory ($STATE_DIRECTORY, which systemd's StateDirectory= sets), else in
+// $XDG_STATE_HOME/noneuclid, else ~/.local/state/noneuclid, made if missing. "" with one sentence
+// (no full stop) in `error` when there is none.
+std::string state_file(const std::string& name, std::string& error);
+
 // Writes `canvas` to `path` as an 8-bit RGB PNG, atomically (AtomicFile): a full disk, an
 // error or a stop signal (stop_signal()) while writing leaves `path` as it was. False with one
 // sentence in `error`.

@@ -36,7 +36,9 @@ std::vector<std::pair<double, double>> fly(W& w, app::Autopilot& ap, double seco
         for (const auto& b : w.bodies)
             if (b.desc->controlled) speed = static_cast<double>(b.speed);
         *top_speed = std::fmax(*top_speed, speed);
-        const int n = ap.frame(w.time, static_cast<double>(w.K), speed, ev);
+        app::PilotView v;
+        v.K = static_cast<double>(w.K), v.ship_speed = speed;
+        const int n = ap.frame(w.time, v, ev);
         for (int i = 0; i < n; ++i) {
             world::Action a{};
             EXPECT_TRUE(world::control_action(ev[i].control, a)) << "the autopilot only uses world actions";
@@ -95,13 +97,14 @@ TEST(Attract, APressEndsItReleasesWhatItHeldAndResets) {
     for (int i = 0; i < n - 2; ++i) EXPECT_FALSE(out[i].pressed) << "only releases before the reset";
     // Idle again: it comes back after the idle time, not before.
     world::InputEvent ev[8];
-    EXPECT_EQ(ap.frame(w.time + 4.9, 0, 0, ev), 0);
+    const app::PilotView still{0, 0};
+    EXPECT_EQ(ap.frame(w.time + 4.9, still, ev), 0);
     EXPECT_FALSE(ap.active());
-    EXPECT_GT(ap.frame(w.time + 5.0, 0, 0, ev), 0);
+    EXPECT_GT(ap.frame(w.time + 5.0, still, ev), 0);
     EXPECT_TRUE(ap.active());
     // Off means off.
     app::Autopilot off({0, 20, 0.25}, 0.5);
-    EXPECT_EQ(off.frame(1e6, 0, 0, ev), 0);
+    EXPECT_EQ(off.frame(1e6, still, ev), 0);
     EXPECT_FALSE(off.active());
 }
 

@@ -33,7 +33,7 @@ Board load(const std::string& name) {
     return b;
 }
 
-TEST(Boards, EveryPiBoardWiresTheSevenButtonsToMatchingHeaderPins) {
+TEST(Boards, EveryPiBoardWiresTheEightButtonsToMatchingHeaderPins) {
     const std::map<std::string, std::string> chip = {{"rpi-zero2w", "pinctrl-bcm2835"}, {"rpi3", "pinctrl-bcm2835"},
                                                      {"rpi4", "pinctrl-bcm2711"}, {"rpi5", "pinctrl-rp1"}};
     for (const auto& [name, label] : chip) {
@@ -50,9 +50,10 @@ TEST(Boards, EveryPiBoardWiresTheSevenButtonsToMatchingHeaderPins) {
             // Not a pin the usual display/audio HATs or the I2C/SPI/UART defaults take.
             EXPECT_TRUE(bb.gpio != 2 && bb.gpio != 3 && bb.gpio != 14 && bb.gpio != 15) << bb.gpio;
         }
-        EXPECT_EQ(gpio_buttons, 7);
+        EXPECT_EQ(gpio_buttons, 8);
+        EXPECT_EQ(b.scene, "asteroids");  // the kiosk plays the game
         for (Control c : {Control::thrust, Control::left, Control::right, Control::curvature_up, Control::curvature_down,
-                          Control::preset, Control::reset}) {
+                          Control::preset, Control::reset, Control::fire}) {
             bool found = false;
             for (const auto& bb : b.buttons) found = found || (bb.control == c && bb.gpio >= 0 && bb.key > 0);
             EXPECT_TRUE(found) << world::control_name(c);

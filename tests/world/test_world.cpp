@@ -266,7 +266,8 @@ TEST(Actions, HyperbolicFlatSphericalSetKOnThePress) {
     EXPECT_EQ(w.K, 0.0);
     for (Action a : {Action::spherical, Action::hyperbolic, Action::flat, Action::next_preset, Action::reset})
         EXPECT_TRUE(acts_on_press(a)) << action_name(a);
-    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down})
+    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down,
+                     Action::fire})
         EXPECT_FALSE(acts_on_press(a)) << action_name(a);
 }
 
