@@ -54,6 +54,11 @@ runs_as() {  # runs_as PID UID GID...: the process's real uid and supplementary 
     shift 2
     for g in "$@"; do grep -q -E "^Groups:.*\b$g\b" <<<"$status" || return 1; done
 }
+# The high-score table in the state directory, read by the program as the service would.
+kept_scores() {
+    ct runuser -u noneuclid -- env STATE_DIRECTORY=/var/lib/noneuclid noneuclid scores |
+        grep -q -E '^ *1 +4200 +level 3 +2026-01-02T03:04:05Z$'
+}
 has_env() { ct cat "/proc/$1/environ" | tr '\0' '\n' | grep -q -x -F -e "$2"; }
 new_pid() { local p; p=$(main_pid); [ "$p" != 0 ] && [ "$p" != "$1" ]; }
 gone() { local p; for p in "$@"; do ! ct test -e "$p" || return 1; done; }
@@ -147,8 +152,9 @@ UNIT
     # shellcheck disable=SC2086  # one word per group id
     check "the running kiosk has the user's uid and the groups video, input and gpio (gids$gids)" runs_as "$pid" "$uid" $gids
     check "the kiosk is given STATE_DIRECTORY=/var/lib/noneuclid" has_env "$pid" STATE_DIRECTORY=/var/lib/noneuclid
-    # The user's state and board override, which an upgrade must keep.
-    ct runuser -u noneuclid -- sh -c 'echo 4200 >/var/lib/noneuclid/scores'
+    # The user's state (a high-score table with a game in it, as the kiosk would have written
+    # it) and board override, which an upgrade must keep.
+    ct runuser -u noneuclid -- sh -c 'printf "# noneuclid high scores\n4200 3 2026-01-02T03:04:05Z\n" >/var/lib/noneuclid/scores'
     ct sh -c 'printf "\n[attract]\nidle_seconds = 300\n" >>/etc/noneuclid/board.toml'
 
     # -- upgrade
@@ -160,7 +166,7 @@ UNIT
     # shellcheck disable=SC2016  # ${Version} is dpkg-query's
     check "dpkg -i upgrades $version~older to $version" [ "$(ct dpkg-query -W -f='${Version}' noneuclid)" = "$version" ]
     check "the upgrade restarted the enabled kiosk" wait_for 10 new_pid "$pid"
-    check "the upgrade kept the state" [ "$(ct cat /var/lib/noneuclid/scores)" = 4200 ]
+    check "the upgrade kept the state: noneuclid scores, as the kiosk's user, has the game" kept_scores
     check "the upgrade kept the board override as the user edited it" ct grep -q -x 'idle_seconds = 300' /etc/noneuclid/board.toml
     check "the upgrade kept the unit enabled" [ "$(ct systemctl is-enabled noneuclid)" = enabled ]
     pid=$(main_pid)
