@@ -30,6 +30,7 @@
 #include <cstdint>
 
 #include "geometry/model.hpp"
+#include "geometry/motion.hpp"
 
 namespace noneuclid::geo {
 
@@ -65,6 +66,15 @@ inline int orientation(const Vec3<fixed>& a, const Vec3<fixed>& b, const Vec3<fi
     const detail::Raw3 A = detail::reduced(a), B = detail::reduced(b), P = detail::reduced(p);
     const int64_t d = A.w * (B.x * P.y - B.y * P.x) - A.x * (B.w * P.y - B.y * P.w) + A.y * (B.w * P.x - B.x * P.w);
     return (d > 0) - (d < 0);
+}
+
+// A rigid body's outline as 3-vectors: its centre's into c, and each local vertex (rho, phi
+// from the facing) moved to where the body is (geometry/motion.hpp), as drawing moves them.
+template <class T>
+void body_vectors(T K, Polar<T> centre, T facing, const Polar<T>* local, std::size_t n, Vec3<T>& c, Vec3<T>* out) {
+    const Motion<T> m = body_motion(K, centre, facing);
+    for (std::size_t i = 0; i < n; ++i) out[i] = m(to_vec(K, local[i]));
+    c = to_vec(K, centre);
 }
 
 // Whether p lies inside (or on the boundary of) the star polygon v[0..n) about its centre c.

@@ -6,7 +6,8 @@
 //
 // kind is ship, asteroid, bullet, grid or body; a game's unused slots are left out, and its
 // asteroids and bullets are named by their number ("asteroid 12": the twelfth spawned). A scene
-// with a game adds, after "K": "phase" (ready, playing or over), "score", "lives", "level" and
+// with a game gives each asteroid its "size" (0 large, 1 medium, 2 small) after its kind, and
+// adds after "K": "phase" (ready, playing or over), "score", "lives", "level" and
 // "events", what happened in the step that led to this frame:
 //   {"start":true}  {"hit":["bullet 3","asteroid 12"]}  {"crash":"asteroid 7"}  {"level":2}
 //   {"over":1230} (the final score)
@@ -113,7 +114,8 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
     std::vector<Polar<T>> v;
     std::vector<std::vector<Polar<T>>> edges;
     bool first = true;
-    for (const Body<T>& b : world.bodies) {
+    for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
+        const Body<T>& b = world.bodies[bi];
         if (!b.active) continue;
         v.resize(b.local.size());
         world.vertices(b, v.data());
@@ -138,7 +140,9 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
         }
         out += "\",\"kind\":\"";
         out += kind_name(b.desc->kind());
-        out += "\",\"center\":";
+        out += '"';
+        if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
+        out += ",\"center\":";
         detail::polar(out, static_cast<double>(b.centre.r), static_cast<double>(b.centre.theta));
         out += ",\"facing\":";
         num(out, detail::degrees(static_cast<double>(b.facing)));

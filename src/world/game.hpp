@@ -5,7 +5,8 @@
 // spawns into them), so nothing is allocated while it runs. World::step moves every body, then
 // calls Game::step for the rules: timers, bullets' range, collisions, firing, levels.
 //
-// Phases: `ready` (the "press fire" screen: asteroids drift, no ship) -> fire starts a game ->
+// Phases: `ready` (the "press fire" screen: asteroids drift, no ship) -> fire starts a game (at
+// the next step) ->
 // `playing` -> the last life lost -> `over` (the score shown for game_over_seconds) -> `ready`.
 //
 // Collisions (geometry/collision.hpp), in the space itself, exact for every K: a bullet hits an
@@ -72,8 +73,10 @@ public:
         for (std::size_t i = 0; i < w.bodies.size(); ++i) {
             const BodyKind k = w.bodies[i].desc->kind();
             if (k == BodyKind::ship && ship_ < 0) ship_ = static_cast<int>(i);
-            if (k == BodyKind::asteroid) asteroids_.push_back({static_cast<int>(i)});
-            if (k == BodyKind::bullet) bullets_.push_back({static_cast<int>(i)});
+            Slot slot;
+            slot.body = static_cast<int>(i);
+            if (k == BodyKind::asteroid) asteroids_.push_back(slot);
+            if (k == BodyKind::bullet) bullets_.push_back(slot);
         }
         for (const geo::Polar<T>& v : w.bodies[static_cast<std::size_t>(ship_)].local)
             if (v.r > nose_) nose_ = v.r;
@@ -88,10 +91,10 @@ public:
     // After the world holding the game was copied: its settings are the copy's.
     void rebind(const GameSettings& g) { settings_ = &g; }
 
-    // Fire was pressed: on the "press fire" screen, a new game begins.
-    template <class W>
-    void press_fire(W& w) {
-        if (on_ && phase == GamePhase::ready) start(w);
+    // Fire was pressed: on the "press fire" screen, a new game begins at the next step (so that
+    // everything a game does happens in a step, and is reported with it).
+    void press_fire() {
+        if (on_ && phase == GamePhase::ready) starting_ = true;
     }
 
     // The rules, after World::step has moved every body by dt (w.time is the time after it).
@@ -101,6 +104,7 @@ public:
         if (!on_) return;
         const GameSettings& g = *settings_;
         const double t = w.time;
+        if (starting_) start(w);
         if (phase == GamePhase::over && t - phase_since >= g.game_over_seconds) phase = GamePhase::ready, phase_since = t;
         if (respawn_at_ >= 0 && t >= respawn_at_) respawn(w);
         if (phase == GamePhase::playing && level_at_ >= 0 && t >= level_at_) {
@@ -122,6 +126,17 @@ public:
         Body<T>& sh = ship(w);
         sh.hidden = sh.active && t < invulnerable_until_ && std::fmod(invulnerable_until_ - t, 0.2) < 0.1;
     }
+
+    // The size of the asteroid in body i (0 large, 1 medium, 2 small); -1 if it is none.
+    int size_of(std::size_t i) const {
+        for (const Slot& s : asteroids_)
+            if (static_cast<std::size_t>(s.body) == i) return s.size;
+        return -1;
+    }
+    // When the next shot may be fired (world time), and when the respawned ship becomes
+    // vulnerable.
+    double next_shot() const { return next_shot_; }
+    double invulnerable_until() const { return invulnerable_until_; }
 
     // For the attract mode's autopilot: the nearest asteroid's direction from the ship's facing
     // (radians, counter-clockwise) and its distance; false with no ship or no asteroid.
@@ -171,6 +186,7 @@ private:
 
     template <class W>
     void start(W& w) {
+        starting_ = false;
         rng_.reseed(settings_->seed ^ static_cast<uint32_t>(w.frame * 2654435761u));
         phase = GamePhase::playing, phase_since = w.time, score = 0, lives = settings_->lives, level = 1;
         level_at_ = -1, next_shot_ = w.time + settings_->bullet_cooldown;
@@ -257,10 +273,8 @@ private:
     // The 3-vectors of body b's vertices into out, its centre's into c.
     template <class W>
     static std::size_t vectors(const W& w, const Body<T>& b, geo::Vec3<T>& c, geo::Vec3<T>* out) {
-        const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
         const std::size_t n = b.local.size() < kGameMaxVertices ? b.local.size() : kGameMaxVertices;
-        for (std::size_t i = 0; i < n; ++i) out[i] = m(geo::to_vec(w.K, b.local[i]));
-        c = geo::to_vec(w.K, b.centre);
+        geo::body_vectors(w.K, b.centre, b.facing, b.local.data(), n, c, out);
         return n;
     }
 
@@ -336,7 +350,7 @@ private:
     }
 
     const GameSettings* settings_ = nullptr;
-    bool on_ = false;
+    bool on_ = false, starting_ = false;
     int ship_ = -1;
     T nose_{};  // the ship's largest rho: where bullets start, and its bounding radius
     std::vector<Slot> asteroids_, bullets_;

@@ -137,7 +137,7 @@ public:
             case Action::hyperbolic: K = T(-1); break;
             case Action::flat: K = T(0); break;
             case Action::spherical: K = T(1); break;
-            case Action::fire: game_.press_fire(*this); break;
+            case Action::fire: game_.press_fire(); break;
             default: break;
         }
     }

@@ -444,7 +444,9 @@ TEST(Dump, EdgesListTheirPointsEndsIncludedAndScreenMirrorsThem) {
     std::string out;
     dump_frame(w, {200, 100, noneuclid::geo::Projection::azimuthal_equidistant}, out);
     // 3 closed edges of 5 points; screen: R = pi fills 50 px (half the smaller side)
-    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"center\":[1,0],\"facing\":90,", 0), 0u) << out;
+    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"kind\":\"body\",\"center\":[1,0],\"facing\":90,", 0),
+              0u)
+        << out;
     EXPECT_NE(out.find("\"travel\":[0,0]"), std::string::npos);
     const std::size_t edges = out.find("\"edges\":["), screen = out.find("\"screen\":[");
     ASSERT_NE(edges, std::string::npos);
