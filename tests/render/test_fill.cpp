@@ -220,7 +220,9 @@ Count check_coverage(const Shape& shape, Place p, double K, bool aa) {
             const bool in = ref.point(x, y, q) && ref.inside(q);
             const int v = out.at(x, y).r;
             const bool lit = aa ? v >= 128 : v == 255;
-            if (!aa) EXPECT_TRUE(v == 0 || v == 255) << x << "," << y;
+            if (!aa) {
+                EXPECT_TRUE(v == 0 || v == 255) << x << "," << y;
+            }
             n.lit += lit, n.inside += in;
             if (lit == in) continue;
             const double m = ref.margin(q);
@@ -242,7 +244,7 @@ void coverage_everywhere(bool aa) {
             for (Place p : kPlaces) {
                 const Count n = check_coverage<T>(shape, p, K, aa);
                 EXPECT_GT(n.inside, 300) << shape.name << " K " << K << " r " << p.r;
-                RecordProperty(std::string(shape.name) + (aa ? "_aa" : "") + "_K" + std::to_string(K) + "_r" +
+                ::testing::Test::RecordProperty(std::string(shape.name) + (aa ? "_aa" : "") + "_K" + std::to_string(K) + "_r" +
                                    std::to_string(p.r) + "_wrong",
                                std::to_string(n.wrong) + " of " + std::to_string(n.inside) + ", margin " +
                                    std::to_string(n.worst_margin));
@@ -328,10 +330,14 @@ void texels_everywhere(bool bilinear) {
                 EXPECT_GT(c.pixels, 300);
                 // Nearest: the texel at the reference's coordinates, or (fixed point, and double
                 // where the coordinate rounds across a texel's edge) the next one.
-                if (!bilinear) EXPECT_LE(c.worst, 1) << shape.name << " K " << K << " r " << p.r;
+                if (!bilinear) {
+                    EXPECT_LE(c.worst, 1) << shape.name << " K " << K << " r " << p.r;
+                }
                 // Bilinear: the blend's position within one texel (its 8-bit channels hold a
                 // quarter texel).
-                if (bilinear) EXPECT_LE(c.worst_offset, 1.0) << shape.name << " K " << K << " r " << p.r;
+                if (bilinear) {
+                    EXPECT_LE(c.worst_offset, 1.0) << shape.name << " K " << K << " r " << p.r;
+                }
             }
 }
 
