@@ -70,6 +70,11 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
 
 std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
     if (choice == "none") return nullptr;
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::path(choice).parent_path();
+    if (!choice.empty() && !dir.empty() && !std::filesystem::is_directory(dir, ec))
+        usage_error("--scores " + choice + ": there is no directory " + dir.string() +
+                    ": make it, or give a file in one that exists (or none).");
     std::string path = choice, error;
     if (path.empty()) path = platform::state_file("scores", error);
     if (path.empty()) {

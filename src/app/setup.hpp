@@ -29,7 +29,8 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
                      const render::PixelFormat& format);
 // The high-score table of a game (app/high_scores.hpp): the file `choice` names, or "" for the
 // state directory's "scores" (platform::state_file); null for "none", or when there is no state
-// directory (said in one line on stderr). Says where the table is, in one line.
+// directory (said in one line on stderr). Says where the table is, in one line. A file in a
+// directory that does not exist is a UsageError.
 std::unique_ptr<HighScoreTable> open_scores(const std::string& choice);
 // The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);

@@ -163,7 +163,7 @@ private:
         T radius{};          // asteroid: its largest rho
         long born = -1;      // asteroid: the frame it was spawned in (not hit in that step)
         T travelled{};       // bullet: the distance flown
-        geo::Polar<T> prev;  // bullet: where the last step began
+        geo::Polar<T> prev{};  // bullet: where the last step began
     };
 
     template <class W>

@@ -40,6 +40,18 @@ check "vfb framebuffer present" [ -n "$vfb" ]
 check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 9
 check "fbcon is off the framebuffers (fbcon=map:7)" [ "$(cat /sys/class/vtconsole/vtcon1/name 2>/dev/null)" = "(M) dummy device" ]
 
+# quit_run NAME: presses and releases quit, waits for the run in $_pid and checks it ended well
+# (its log, $_out.log, shown).
+quit_run() {
+    sim_pull "$QUIT" pull-down
+    sleep 0.1
+    sim_pull "$QUIT" pull-up
+    wait "$_pid"
+    _rc=$?
+    cat "$_out.log"
+    check "$1: exit 0" [ "$_rc" = 0 ]
+}
+
 # The last line of a log: the error sentence.
 last_line() { tail -n 1 "$1"; }
 
@@ -89,13 +101,7 @@ kiosk_case() {  # NAME BINARY FRAMEBUFFER
     sleep 0.3
     sim_pull "$THRUST" pull-up
     sleep 0.3
-    sim_pull "$QUIT" pull-down
-    sleep 0.1
-    sim_pull "$QUIT" pull-up
-    wait "$_pid"
-    _rc=$?
-    cat "$_out.log"
-    check "$1: exit 0" [ "$_rc" = 0 ]
+    quit_run "$1"
     check "$1: VT back in text mode" [ "$(probe kdmode "$TTY")" = text ]
     echo "recorded:"
     cat "$_out.rec"
@@ -121,13 +127,7 @@ game_case() {  # BINARY FRAMEBUFFER
     sleep 0.8
     sim_pull "$FIRE" pull-down    # held: a shot every 0.2 s
     sleep 0.7
-    sim_pull "$QUIT" pull-down
-    sleep 0.1
-    sim_pull "$QUIT" pull-up
-    wait "$_pid"
-    _rc=$?
-    cat "$_out.log"
-    check "game: exit 0" [ "$_rc" = 0 ]
+    quit_run game
     cat "$_out.rec"
     check "game: fire pressed twice, released once" \
         [ "$(grep -E '^[0-9]' "$_out.rec" | cut -d' ' -f2- | tr '\n' ,)" = "press fire,release fire,press fire," ]
