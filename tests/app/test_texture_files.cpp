@@ -209,7 +209,10 @@ TEST(TextureFiles, PathsAreRelativeToTheSceneAndReadOnce) {
     EXPECT_EQ(s.bodies.back().role, world::BodyKind::bullet);
     bool asteroid = false;
     for (const world::SceneBody& b : s.bodies)
-        if (b.role == world::BodyKind::asteroid) asteroid = true, EXPECT_EQ(b.texture, s.bodies[0].texture);
+        if (b.role == world::BodyKind::asteroid) {
+            asteroid = true;
+            EXPECT_EQ(b.texture, s.bodies[0].texture);
+        }
     EXPECT_TRUE(asteroid);
 }
 
