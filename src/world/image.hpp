@@ -21,7 +21,7 @@ struct Image {
 };
 
 // The largest image a texture may be, in texels each way: the PNG header is checked before the
-// image is decoded, and a larger one is refused (docs/reliability.md). 1024 x 1024 texels take
+// image is decoded, and a larger one is refused (docs/file-formats.md). 1024 x 1024 texels take
 // 4 MiB; a body 60 px across shows about 60 of them.
 inline constexpr int kImageMaxSide = 1024;
 // The largest PNG file read for a texture.
