@@ -9,7 +9,7 @@ const char* version() { return NONEUCLID_VERSION; }
 
 void print_help() {
     std::fputs(
-        "usage: noneuclid [COMMAND] [OPTIONS]\n"
+        "Usage: noneuclid [COMMAND] [OPTIONS]\n"
         "\n"
         "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin, Child & He\n"
         "(2019): bodies fly through a spherical, flat or hyperbolic world while K changes.\n"
@@ -74,10 +74,14 @@ void print_help() {
         "                     else $XDG_STATE_HOME/noneuclid, else ~/.local/state/noneuclid;\n"
         "                     none: not kept)\n"
         "\n"
-        "demo: --out-dir DIR (default out), --engine E, --size WxH, --no-hud\n"
-        "accuracy: --samples N (262144), --random N (65536), --seed S (20190101)\n"
-        "buttons: --board, --input gpio|evdev|auto, --events N, --timeout SECONDS\n"
-        "scores: --scores FILE\n"
+        "demo:\n"
+        "  --out-dir DIR (default out), --engine E, --size WxH, --no-hud\n"
+        "accuracy:\n"
+        "  --samples N (262144), --random N (65536), --seed S (20190101)\n"
+        "buttons:\n"
+        "  --board, --input gpio|evdev|auto, --events N, --timeout SECONDS\n"
+        "scores:\n"
+        "  --scores FILE\n"
         "\n"
         "keys (run on a desktop): arrows or WASD fly, Space (or Ctrl) fires, + and - change K,\n"
         "1 2 3 set K to -1, 0, +1, P the next projection, H the HUD, R reset, Esc quits.\n"

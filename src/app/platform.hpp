@@ -128,7 +128,8 @@ bool hud_font(const std::string& choice, LoadedFont& out, std::string& error);
 // ---- the kiosk's board and buttons (platform/linux) --------------------------------------
 
 // `spec` is a board file's path or a board name (rpi4, generic, ...); "" detects the board from
-// the machine's device-tree model (generic when none matches). `note` says which and why.
+// the machine's device-tree model (generic when none matches); then the board override
+// (/etc/noneuclid/board.toml, platform/linux/boards.hpp) over it. `note` says which and why.
 bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error);
 
 // `noneuclid buttons`: prints each press and release of the board's buttons (`input`: gpio,
