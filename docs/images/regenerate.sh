@@ -5,6 +5,8 @@
 # kiosk.png      the kiosk scene after 120 frames (2 s), anti-aliased, with the HUD, 800x480
 # curvature.png  the same scene and frame at K = -1, 0 and +1, side by side (three 400x400
 #                renders joined by the few lines of Python below: no imaging library needed)
+# textured.png   the textured scene (five textured bodies, one filled) at K = -1, 0 and +1;
+#                textured-sweep.png the same at K = -1, -0.5, 0, 0.5 and 1
 # game.png       the game at K = -1, played by game.actions (fire, key 1, turns, thrust)
 # game-timelapse.png  attract mode playing the game for 30 s (a headless run, recorded), a
 #                frame every 2 s over the last frame's grid
@@ -24,7 +26,7 @@ trap 'rm -rf "$tmp"' EXIT
 for k in -1 0 1; do
     "$nc" render --scene kiosk --frames 120 --aa --hud --size 400x400 --curvature "$k" --out "$tmp/k$k.png"
 done
-python3 - "$tmp/k-1.png" "$tmp/k0.png" "$tmp/k1.png" docs/images/curvature.png <<'PY'
+cat > "$tmp/join.py" <<'PY'
 # Join 8-bit RGB PNGs of the same height left to right, with a 4-px gap.
 import struct, sys, zlib
 
@@ -69,3 +71,10 @@ with open(sys.argv[-1], 'wb') as out:
               + chunk(b'IDAT', zlib.compress(raw, 9)) + chunk(b'IEND', b''))
 print('regenerate.sh: wrote', sys.argv[-1], f'({width}x{h})')
 PY
+python3 "$tmp/join.py" "$tmp/k-1.png" "$tmp/k0.png" "$tmp/k1.png" docs/images/curvature.png
+# The textured scene at K = -1, 0, +1, and through the sweep: K = -1, -0.5, 0, 0.5, 1.
+for k in -1 -0.5 0 0.5 1; do
+    "$nc" render --scene textured --frames 60 --aa --size 400x400 --curvature "$k" --out "$tmp/t$k.png"
+done
+python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t0.png" "$tmp/t1.png" docs/images/textured.png
+python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t-0.5.png" "$tmp/t0.png" "$tmp/t0.5.png" "$tmp/t1.png" docs/images/textured-sweep.png
