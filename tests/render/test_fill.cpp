@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "coordinate_image.hpp"
 #include "geometry/local_frame.hpp"
 #include "geometry/reference.hpp"
 #include "render/draw_world.hpp"
@@ -272,18 +273,8 @@ TEST(FillCoverage, ABodyHoldingTheAntipodeReachesItsCircle) {
 
 // ---- textures --------------------------------------------------------------------------------
 
-// Texel (x, y) of a 64 x 64 image holds its own coordinates: red 4 x, green 4 y.
-std::shared_ptr<const world::Image> coordinate_image() {
-    auto im = std::make_shared<world::Image>();
-    im->width = im->height = 64;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) im->texels.push_back(uint32_t(4 * x) << 16 | uint32_t(4 * y) << 8 | 0x80);
-    return im;
-}
-int texel_gap(int a, int b) {  // round the image, which repeats
-    const int d = std::abs(a - b) % 64;
-    return std::min(d, 64 - d);
-}
+using test::coordinate_image;
+using test::texel_gap;
 
 struct TexelCheck {
     long pixels = 0;

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "coordinate_image.hpp"
 #include "render/draw_world.hpp"
 
 using namespace noneuclid;
@@ -17,14 +18,7 @@ namespace {
 
 constexpr int kW = 400, kH = 400;
 
-// Texel (x, y) of a 64 x 64 image holds its own coordinates: red 4 x, green 4 y, blue 0x80.
-std::shared_ptr<const world::Image> coordinate_image() {
-    auto im = std::make_shared<world::Image>();
-    im->width = im->height = 64;
-    for (int y = 0; y < 64; ++y)
-        for (int x = 0; x < 64; ++x) im->texels.push_back(uint32_t(4 * x) << 16 | uint32_t(4 * y) << 8 | 0x80);
-    return im;
-}
+using test::coordinate_image;
 
 world::Scene c_scene(double K, double r, double theta, double facing) {
     world::Scene sc;
@@ -57,10 +51,7 @@ std::vector<render::Rgb> textured(const world::Scene& sc) {
     return out;
 }
 
-int gap(int a, int b) {  // texels apart, round the image, which repeats
-    const int d = std::abs(a - b) % 64;
-    return std::min(d, 64 - d);
-}
+using test::texel_gap;
 
 TEST(FillEngines, FixedDrawsDoublesTexelsWithinOne) {
     struct Place {
@@ -75,7 +66,7 @@ TEST(FillEngines, FixedDrawsDoublesTexelsWithinOne) {
             for (std::size_t i = 0; i < f.size(); ++i) {
                 if (f[i].b != 0x80 || d[i].b != 0x80) continue;  // not drawn by both
                 ++both;
-                worst = std::max({worst, gap(f[i].r / 4, d[i].r / 4), gap(f[i].g / 4, d[i].g / 4)});
+                worst = std::max({worst, texel_gap(f[i].r / 4, d[i].r / 4), texel_gap(f[i].g / 4, d[i].g / 4)});
             }
             EXPECT_GT(both, 300) << "K " << K << " r " << p.r;
             EXPECT_LE(worst, 1) << "K " << K << " r " << p.r;
