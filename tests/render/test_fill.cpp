@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include "../geometry/chart_reference.hpp"
 #include "coordinate_image.hpp"
 #include "geometry/local_frame.hpp"
 #include "geometry/reference.hpp"
@@ -95,18 +96,9 @@ void fill_once(world::World<T>& w, render::DrawScratch<T>& s, Render<T>& out, bo
 
 // ---- the reference ---------------------------------------------------------------------------
 
-double TK(double K, double x) { return geo::ref::S(K, x) / geo::ref::C(K, x); }
-struct P2 {
-    long double u, v;
-};
-bool pnpoly(const std::vector<P2>& poly, P2 p) {
-    bool in = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-        if ((poly[i].v > p.v) != (poly[j].v > p.v) &&
-            p.u < (poly[j].u - poly[i].u) * (p.v - poly[i].v) / (poly[j].v - poly[i].v) + poly[i].u)
-            in = !in;
-    return in;
-}
+using test::P2;
+using test::pnpoly;
+using test::TK;
 struct Reference {
     double K;
     Shape shape;
