@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "displays.hpp"
 #include "render/draw_world.hpp"
 #include "fastest.hpp"
 
@@ -96,14 +97,7 @@ const char* const kVariants[] = {"filled", "nearest", "bilinear", "memset"};
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    struct Config {
-        const char* name;
-        int w, h;
-        render::PixelFormat f;
-    };
-    const Config configs[] = {{"800x480_rgb565", 800, 480, render::PixelFormat::rgb565()},
-                              {"1920x1080_xrgb8888", 1920, 1080, render::PixelFormat::xrgb8888()}};
-    for (const Config& cf : configs)
+    for (const BenchDisplay& cf : kBenchDisplays)
         for (const char* e : {"fixed", "double"})
             for (const char* variant : kVariants) {
                 const std::string name = std::string(cf.name) + "/" + e + "/" + variant, v = variant;
@@ -121,7 +115,7 @@ int main(int argc, char** argv) {
     std::printf("\nfills of the textured scene: ns per covered pixel (the ratio to a memset of as many pixels)\n\n");
     std::printf("| display | engine | pixels | filled | nearest | bilinear | memset |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|\n");
-    for (const Config& cf : configs)
+    for (const BenchDisplay& cf : kBenchDisplays)
         for (const char* e : {"fixed", "double"}) {
             const std::string at = std::string(cf.name) + "/" + e + "/";
             auto per_pixel = [&](const char* v) {
