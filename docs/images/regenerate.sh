@@ -5,6 +5,9 @@
 # kiosk.png      the kiosk scene after 120 frames (2 s), anti-aliased, with the HUD, 800x480
 # curvature.png  the same scene and frame at K = -1, 0 and +1, side by side (three 400x400
 #                renders joined by the few lines of Python below: no imaging library needed)
+# game.png       the game at K = -1, played by game.actions (fire, key 1, turns, thrust)
+# game-timelapse.png  attract mode playing the game for 30 s (a headless run, recorded), a
+#                frame every 2 s over the last frame's grid
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=build/release/noneuclid
@@ -14,6 +17,10 @@ fi
 "$nc" render --scene kiosk --frames 120 --aa --hud --size 800x480 --out docs/images/kiosk.png
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+"$nc" render --actions docs/images/game.actions --frames 570 --out docs/images/game.png
+"$nc" run --display png --scene asteroids --attract 0.5 --frames 1800 --aa --scores none --record "$tmp/game.rec" \
+    --screenshot "$tmp/game-last.png"
+"$nc" render --actions "$tmp/game.rec" --timelapse 120 --out docs/images/game-timelapse.png
 for k in -1 0 1; do
     "$nc" render --scene kiosk --frames 120 --aa --hud --size 400x400 --curvature "$k" --out "$tmp/k$k.png"
 done

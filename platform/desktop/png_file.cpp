@@ -21,6 +21,22 @@ struct PngMessages {
     png_longjmp(png, 1);
 }
 void png_warned(png_structp, png_const_charp) {}
+
+// The canvas's rows, top to bottom; false if a stop signal came first. A function of its own so
+// that no local of write_png changes after its setjmp (g++ -O2 warns of those: -Wclobbered).
+bool write_rows(png_structp png, const render::Canvas& canvas, std::vector<png_byte>& row) {
+    for (int y = 0; y < canvas.height(); ++y) {
+        for (int x = 0; x < canvas.width(); ++x) {
+            const render::Rgb c = canvas.get(x, y);
+            row[static_cast<std::size_t>(x) * 3] = c.r;
+            row[static_cast<std::size_t>(x) * 3 + 1] = c.g;
+            row[static_cast<std::size_t>(x) * 3 + 2] = c.b;
+        }
+        png_write_row(png, row.data());
+        if (stop_signal() != 0) return false;
+    }
+    return true;
+}
 }  // namespace
 
 bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error) {
@@ -35,7 +51,6 @@ bool write_png(const std::string& path, const render::Canvas& canvas, std::strin
         return false;
     }
     std::vector<png_byte> row(static_cast<std::size_t>(canvas.width()) * 3);
-    bool stopped = false;
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
         const int err = errno;
@@ -49,17 +64,7 @@ bool write_png(const std::string& path, const render::Canvas& canvas, std::strin
     png_set_IHDR(png, info, static_cast<png_uint_32>(canvas.width()), static_cast<png_uint_32>(canvas.height()), 8,
                  PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
-    for (int y = 0; y < canvas.height() && !stopped; ++y) {
-        for (int x = 0; x < canvas.width(); ++x) {
-            const render::Rgb c = canvas.get(x, y);
-            row[static_cast<std::size_t>(x) * 3] = c.r;
-            row[static_cast<std::size_t>(x) * 3 + 1] = c.g;
-            row[static_cast<std::size_t>(x) * 3 + 2] = c.b;
-        }
-        png_write_row(png, row.data());
-        stopped = stop_signal() != 0;
-    }
-    if (stopped) {
+    if (!write_rows(png, canvas, row)) {
         png_destroy_write_struct(&png, &info);
         error = "stopped by signal " + std::to_string(stop_signal()) + " while writing " + path +
                 "; it is left as it was.";

@@ -88,10 +88,33 @@ bool detect_board(world::Board& out, std::string& why, std::string& error) {
 
 namespace noneuclid::platform {
 
+std::string board_override_path() {
+    if (const char* env = std::getenv("NONEUCLID_BOARD_OVERRIDE")) return env;
+#ifdef NONEUCLID_BOARD_OVERRIDE
+    return NONEUCLID_BOARD_OVERRIDE;
+#else
+    return "";
+#endif
+}
+
 bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error) {
-    if (spec.empty()) return detect_board(out, note, error);
-    if (!load_board(spec, out, error)) return false;
-    note = "board " + out.name + " (" + out.file + ")";
+    if (spec.empty()) {
+        if (!detect_board(out, note, error)) return false;
+    } else {
+        if (!load_board(spec, out, error)) return false;
+        note = "board " + out.name + " (" + out.file + ")";
+    }
+    // The kiosk's local settings, over whichever board it is: a file that is not there is no
+    // override (the package ships one that sets nothing).
+    const std::string over = board_override_path();
+    std::error_code ec;
+    if (over.empty() || !fs::exists(over, ec)) return true;
+    world::BoardError e;
+    if (!world::overlay_board_file(over, out, e)) {
+        error = e.to_string();
+        return false;
+    }
+    note += ". " + over + " is read over it";
     return true;
 }
 

@@ -14,6 +14,11 @@ namespace noneuclid::platform {
 // <prefix>/share/noneuclid/boards, and the source tree's boards/ this binary was built from.
 std::vector<std::string> board_dirs();
 
+// The board override, read over the board `find_board` finds: $NONEUCLID_BOARD_OVERRIDE when
+// set (empty: none), else <sysconfdir>/noneuclid/board.toml (/etc/noneuclid/board.toml for a
+// /usr prefix, the Debian package's).
+std::string board_override_path();
+
 // `spec` is a file path (contains '/' or ends in .toml) or a board name (rpi4, generic, ...).
 // On failure returns false with one sentence in `error`.
 bool load_board(const std::string& spec, world::Board& out, std::string& error);

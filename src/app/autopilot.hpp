@@ -9,6 +9,9 @@
 // moves at 2 / sweep_seconds per second on average, turning at the ends. The flight: a gentle
 // left turn held for 0.6 s every 5 s, and thrust whenever the ship is slower than
 // `cruise_speed` (the world has no drag, so thrusting on a timer would speed up for ever).
+// In a game it plays instead of turning on a timer: it turns toward the nearest asteroid,
+// holds fire while that one is within a few degrees of the nose and in range, and holds fire
+// on the "press fire" screen to start the next game.
 #pragma once
 
 #include <cmath>
@@ -26,6 +29,18 @@ struct AttractOptions {
     double cruise_speed = 0.25; // world units per second
 };
 
+// What the autopilot sees of the world each frame.
+struct PilotView {
+    double K = 0;
+    double ship_speed = 1e9;  // the controlled body's (1e9: none, never thrust)
+    bool game = false;        // the scene has a game: play it
+    bool ready = false;       // its "press fire" screen
+    bool target = false;      // an asteroid to aim at (and a ship to aim with)
+    double aim = 0;           // its direction from the ship's nose, radians counter-clockwise
+    double distance = 0;      // and its distance
+    double range = 0;         // how far a bullet flies
+};
+
 class Autopilot {
 public:
     Autopilot() = default;
@@ -37,7 +52,7 @@ public:
     // Writes the controls to release (what the autopilot held) plus a reset tap into `out`
     // (at most 8) and returns how many; the caller applies them before the visitor's event.
     int interrupt(double t, InputEvent* out) {
-        last_input_ = t;
+        last_input_ = t, engage_ = false;
         if (!active_) return 0;
         active_ = false;
         int n = release_all(out);
@@ -46,13 +61,20 @@ public:
         return n;
     }
 
+    // The game just ended: attract mode begins now (if it is on at all), not after the idle
+    // time. Takes effect at the next frame().
+    void engage() {
+        if (o_.idle_seconds > 0) engage_ = true;
+    }
+
     // Once per frame, before the step: the controls to press or release now (at most 8).
-    // `t` is the world time, `K` the current curvature, `ship_speed` the controlled body's.
-    int frame(double t, double K, double ship_speed, InputEvent* out) {
+    // `t` is the world time, `v` what the autopilot sees.
+    int frame(double t, const PilotView& v, InputEvent* out) {
         int n = 0;
+        const double K = v.K;
         if (!active_) {
-            if (o_.idle_seconds <= 0 || t - last_input_ < o_.idle_seconds) return 0;
-            active_ = true, since_ = t, accumulator_ = 0;
+            if (!engage_ && (o_.idle_seconds <= 0 || t - last_input_ < o_.idle_seconds)) return 0;
+            active_ = true, engage_ = false, since_ = t, accumulator_ = 0;
             dir_ = K >= 1 - 1e-6 ? -1 : 1;
         }
         const double tt = t - since_;
@@ -66,15 +88,25 @@ public:
         if (hold_k) accumulator_ -= 1;
         n += set(dir_ > 0 ? Control::curvature_up : Control::curvature_down, hold_k, out + n);
         n += set(dir_ > 0 ? Control::curvature_down : Control::curvature_up, false, out + n);
-        n += set(Control::left, std::fmod(tt, 5.0) >= 4.4, out + n);
-        n += set(Control::thrust, ship_speed < o_.cruise_speed, out + n);
+        if (v.game) {
+            const bool aimed = v.target && std::fabs(v.aim) < 0.08 && v.distance < v.range;
+            n += set(Control::left, v.target && v.aim > 0.05, out + n);
+            n += set(Control::right, v.target && v.aim < -0.05, out + n);
+            n += set(Control::fire, aimed || (v.ready && !held_[slot(Control::fire)]), out + n);
+        } else {
+            n += set(Control::left, std::fmod(tt, 5.0) >= 4.4, out + n);
+        }
+        n += set(Control::thrust, v.ship_speed < o_.cruise_speed, out + n);
         return n;
     }
 
 private:
-    static constexpr Control kHeld[] = {Control::thrust, Control::left, Control::curvature_up, Control::curvature_down};
+    static constexpr Control kHeld[] = {Control::thrust,         Control::left,  Control::right,
+                                        Control::curvature_up,   Control::fire,
+                                        Control::curvature_down};
+    static constexpr int kHeldCount = 6;
     static int slot(Control c) {
-        for (int i = 0; i < 4; ++i)
+        for (int i = 0; i < kHeldCount; ++i)
             if (kHeld[i] == c) return i;
         return 0;
     }
@@ -93,10 +125,10 @@ private:
 
     AttractOptions o_;
     double rate_ = 0.5;
-    bool active_ = false;
+    bool active_ = false, engage_ = false;
     double last_input_ = 0, since_ = 0, accumulator_ = 0;
     int dir_ = 1;
-    bool held_[4] = {};
+    bool held_[kHeldCount] = {};
 };
 
 }  // namespace noneuclid::app

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/frame_loop.hpp"
+#include "app/high_scores.hpp"
 #include "app/memory_display.hpp"
 #include "app/setup.hpp"
 
@@ -100,10 +101,12 @@ int run_command(int argc, char** argv, int first) {
         }
         file = recording.file();
     }
+    const std::unique_ptr<HighScoreTable> scores = scene.game.on ? open_scores(o.scores) : nullptr;
+    if (scores && !o.best_given) o.best = scores->best();
     Recorder recorder(file);
     if (file) record_settings(recorder, o, display_name(kind), font, display->canvas().format());
-    const std::unique_ptr<Session> session =
-        make_session(o.engine, scene, session_options(o, scene, o.legend), font.font, file ? &recorder : nullptr);
+    const std::unique_ptr<Session> session = make_session(o.engine, scene, session_options(o, scene, o.legend), font.font,
+                                                          file ? &recorder : nullptr, scores.get());
     LoopOptions lo;
     lo.frames = o.frames, lo.fps = o.fps, lo.stats = o.stats, lo.screenshot = o.screenshot;
     FrameLoop loop(*display, *session, o.actions.empty() ? nullptr : &script, file ? &recorder : nullptr, lo);

@@ -10,6 +10,7 @@ int render_command(int argc, char** argv, int first);
 int demo_command(int argc, char** argv, int first);
 int run_command(int argc, char** argv, int first);
 int buttons_command(int argc, char** argv, int first);
+int scores_command(int argc, char** argv, int first);
 void print_help();
 const char* version();
 

@@ -31,6 +31,7 @@ int dispatch(int argc, char** argv) {
     if (word == "demo") return demo_command(argc, argv, 2);
     if (word == "accuracy") return accuracy_command(argc, argv, 2);
     if (word == "buttons") return buttons_command(argc, argv, 2);
+    if (word == "scores") return scores_command(argc, argv, 2);
     if (word[0] == '-') return accuracy_command(argc, argv, 1);  // `noneuclid --samples N`, as before
     usage_error("unknown command '" + word + "'; see 'noneuclid --help'.");
 }

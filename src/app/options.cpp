@@ -74,6 +74,8 @@ bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
     else if (is("--no-hud", kPicture)) o.hud = false;
     else if (is("--font", kPicture)) o.font = a.value(opt);
     else if (is("--legend", kPicture)) o.legend = legend_value(opt, a.value(opt));
+    else if (is("--best", kPicture)) o.best = static_cast<long>(a.count(opt, 0, 1000000000)), o.best_given = true;
+    else if (is("--scores", kRun)) o.scores = a.value(opt);
     else if (is("--width", kRender)) o.line_width = a.number(opt, 0.1, 64);
     else if (is("--timelapse", kRender)) o.timelapse = static_cast<long>(a.count(opt, 1, 100000000));
     else if (is("--timelapse-grids", kRender)) o.timelapse_grids = static_cast<long>(a.count(opt, 1, 100000000));

@@ -34,6 +34,8 @@ struct Options {
     bool hud = false;           // run: true
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)
+    long best = 0;              // the game's high score shown before any game ends (run: the table's)
+    bool best_given = false;
     double line_width = 1;      // render
     long timelapse = 0;         // render
     long timelapse_grids = 0;   // render: and every this-many-th frame's grid (0: none)
@@ -44,6 +46,7 @@ struct Options {
     std::string display;        // "" chosen, x11, fbdev, png
     std::string device;         // fbdev:DEVICE ("" the board's)
     std::string board, input = "auto", record, screenshot;
+    std::string scores;         // the high-score table ("" the state directory's, "none")
     double attract = 0;         // idle seconds before attract mode; 0 off
     bool attract_given = false; // --attract (else the display's default)
     double sweep = 40;          // attract mode's sweep of K from -1 to +1, seconds (the board's)

@@ -87,6 +87,12 @@ private:
     std::FILE* file_ = nullptr;
 };
 
+// The path of a file the program keeps between runs (the game's high scores): in the
+// service's state directory ($STATE_DIRECTORY, which systemd's StateDirectory= sets), else in
+// $XDG_STATE_HOME/noneuclid, else ~/.local/state/noneuclid, made if missing. "" with one sentence
+// (no full stop) in `error` when there is none.
+std::string state_file(const std::string& name, std::string& error);
+
 // Writes `canvas` to `path` as an 8-bit RGB PNG, atomically (AtomicFile): a full disk, an
 // error or a stop signal (stop_signal()) while writing leaves `path` as it was. False with one
 // sentence in `error`.
@@ -138,7 +144,8 @@ bool hud_font(const std::string& choice, LoadedFont& out, std::string& error);
 // ---- the kiosk's board and buttons (platform/linux) --------------------------------------
 
 // `spec` is a board file's path or a board name (rpi4, generic, ...); "" detects the board from
-// the machine's device-tree model (generic when none matches). `note` says which and why.
+// the machine's device-tree model (generic when none matches); then the board override
+// (/etc/noneuclid/board.toml, platform/linux/boards.hpp) over it. `note` says which and why.
 bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error);
 
 // `noneuclid buttons`: prints each press and release of the board's buttons (`input`: gpio,

@@ -15,7 +15,7 @@ namespace {
 constexpr std::size_t kSettingLimit = 4096;
 
 const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size", "format", "aa",
-                                    "hud",   "font",      "legend", "frames",     nullptr};
+                                    "hud",   "font",      "legend", "frames",     "best",   nullptr};
 
 bool is_setting(const std::string& word) {
     for (const char* const* k = kSettingKeys; *k; ++k)

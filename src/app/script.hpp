@@ -13,10 +13,11 @@
 //                                   HUD's legend says so
 //
 // Controls: the world's actions (thrust, left, right, curvature_up, curvature_down, preset,
-// reset, hyperbolic, flat, spherical) and the view's (projection: the next one; hud: on/off).
-// Settings: scene, curvature, engine, projection, size, format, aa, hud, font, legend, frames
-// (see `noneuclid --help`). Events may come in any order: they are sorted by time, ties kept in
-// file order. An event at time t applies before the first step that starts at or after t.
+// reset, hyperbolic, flat, spherical, fire) and the view's (projection: the next one; hud:
+// on/off). Settings: scene, curvature, engine, projection, size, format, aa, hud, font, legend,
+// frames, best (see `noneuclid --help`). Events may come in any order: they are sorted by
+// time, ties kept in file order. An event at time t applies before the first step that starts
+// at or after t.
 #pragma once
 
 #include <cstdint>

@@ -25,11 +25,14 @@ class EngineSession final : public Session {
 public:
     using T = typename W::scalar;
 
-    EngineSession(const world::Scene& scene, const SessionOptions& o, const render::Font& font, Recorder* recorder)
+    EngineSession(const world::Scene& scene, const SessionOptions& o, const render::Font& font, Recorder* recorder,
+                  GameOverSink* scores)
         : world_(scene),
           options_(o),
           font_(font),
           recorder_(recorder),
+          scores_(scores),
+          best_(o.best),
           pool_(o.threads),
           autopilot_(o.attract, scene.curvature_rate),
           dt_(o.dt) {
@@ -67,10 +70,12 @@ public:
         world::InputEvent ap[8];
         if (user_held_any()) autopilot_.interrupt(world_.time, ap);  // a held button is not idle
         const bool was = autopilot_.active();
-        const int n = autopilot_.frame(world_.time, static_cast<double>(world_.K), ship_speed(), ap);
+        const int n = autopilot_.frame(world_.time, pilot_view(), ap);
         if (!was && autopilot_.active()) record(ScriptEvent::attract_on);
         for (int i = 0; i < n; ++i) apply(ap[i]);
+        const world::GamePhase before = world_.game().phase;
         world_.step(dt_);
+        game_events(before);
     }
 
     void draw_world(const render::Canvas& c, Layers layers, bool backdrop) override {
@@ -92,7 +97,9 @@ public:
         info.fps = options_.show_fps ? fps_ : 0;
         info.scene = options_.scene_name.c_str();
         info.projection = geo::projection_name(options_.draw.projection);
-        info.controls = autopilot_.active() || replayed_attract_ ? kAttractLegend : options_.legend.c_str();
+        const bool attract = autopilot_.active() || replayed_attract_;
+        info.controls = attract ? (world_.game().on() ? kAttractGameLegend : kAttractLegend) : options_.legend.c_str();
+        info.game = hud_game();
         render::draw_hud(c, font_, info);
     }
 
@@ -165,16 +172,60 @@ private:
             if (h) return true;
         return false;
     }
-    double ship_speed() const {
+    PilotView pilot_view() const {
+        PilotView v;
+        v.K = static_cast<double>(world_.K);
         for (const auto& b : world_.bodies)
-            if (b.desc->controlled) return static_cast<double>(b.speed);
-        return 1e9;  // nothing to fly: never thrust
+            if (b.desc->controlled && b.active) {
+                v.ship_speed = static_cast<double>(b.speed);
+                break;
+            }
+        const auto& g = world_.game();
+        v.game = g.on();
+        if (v.game) {
+            v.ready = g.phase == world::GamePhase::ready;
+            v.target = g.aim(world_, v.aim, v.distance);
+            v.range = world_.scene().game.bullet_range;
+        }
+        return v;
+    }
+    // After a step: a game that ended goes to the high-score table and may beat the best; when
+    // its game-over screen is done, attract mode (if on) plays the next one.
+    void game_events(world::GamePhase before) {
+        const auto& g = world_.game();
+        for (int i = 0; i < g.event_count(); ++i) {
+            const world::GameEvent& e = g.events()[i];
+            if (e.kind == world::GameEvent::start) new_best_ = false;
+            if (e.kind != world::GameEvent::over) continue;
+            new_best_ = e.value > best_;
+            if (new_best_) best_ = e.value;
+            if (scores_) scores_->game_over(e.value, g.level);
+        }
+        if (before == world::GamePhase::over && g.phase == world::GamePhase::ready) autopilot_.engage();
+    }
+    render::HudGame hud_game() const {
+        render::HudGame h;
+        const auto& g = world_.game();
+        h.on = g.on();
+        if (!h.on) return h;
+        h.score = g.score, h.best = best_, h.new_best = new_best_, h.lives = g.lives, h.level = g.level;
+        switch (g.phase) {
+            case world::GamePhase::ready: h.screen = render::HudGame::ready; break;
+            case world::GamePhase::over: h.screen = render::HudGame::over; break;
+            case world::GamePhase::playing:
+                h.screen = world_.time - g.level_since < 2 ? render::HudGame::new_level : render::HudGame::none;
+                break;
+        }
+        return h;
     }
 
     W world_;
     SessionOptions options_;
     const render::Font& font_;
     Recorder* recorder_;
+    GameOverSink* scores_;
+    long best_;
+    bool new_best_ = false;
     render::WorkerPool pool_;
     Autopilot autopilot_;
     T dt_;
@@ -190,9 +241,9 @@ private:
 }  // namespace
 
 std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
-                                      const render::Font& font, Recorder* recorder) {
+                                      const render::Font& font, Recorder* recorder, GameOverSink* scores) {
     return with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
-        return std::make_unique<EngineSession<W>>(scene, options, font, recorder);
+        return std::make_unique<EngineSession<W>>(scene, options, font, recorder, scores);
     });
 }
 

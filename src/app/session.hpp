@@ -34,6 +34,16 @@ struct SessionOptions {
     AttractOptions attract{0, 40, 0.25};  // idle_seconds 0: off
     int threads = 1;              // drawing threads (a pool started once); the same pixels
     double dt = 1.0 / 60;         // world seconds per step
+    long best = 0;                // a game's high score before this session (its HUD shows it)
+};
+
+// Told of each game that ends (the high-score table, app/high_scores.hpp).
+class GameOverSink {
+public:
+    virtual void game_over(long score, int level) = 0;
+
+protected:
+    ~GameOverSink() = default;
 };
 
 // What Session::draw_world draws: everything, or a time-lapse's layers (grids_tinted: the grids
@@ -74,14 +84,16 @@ public:
     virtual const SessionOptions& options() const = 0;  // as now (P and H change them)
 };
 
-// A session of `scene` on `engine`, its drawing threads started. `font` (the HUD's) and
-// `recorder` (may be null) must outlive it.
+// A session of `scene` on `engine`, its drawing threads started. `font` (the HUD's),
+// `recorder` and `scores` (both may be null) must outlive it.
 std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
-                                      const render::Font& font, Recorder* recorder);
+                                      const render::Font& font, Recorder* recorder, GameOverSink* scores = nullptr);
 
 // The HUD legends: the desktop's keys, the kiosk's buttons.
-inline constexpr const char* kKeysLegend = "arrows/WASD  +/- K  1 2 3 K=-1,0,1  P projection  H HUD  R reset  Esc";
-inline constexpr const char* kButtonsLegend = "thrust  left/right  curvature +/-  preset  reset";
+inline constexpr const char* kKeysLegend =
+    "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  H HUD  R reset  Esc";
+inline constexpr const char* kButtonsLegend = "thrust  left/right  fire  curvature +/-  preset  reset";
 inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
+inline constexpr const char* kAttractGameLegend = "attract mode: press fire to play";
 
 }  // namespace noneuclid::app

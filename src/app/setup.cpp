@@ -1,5 +1,6 @@
 #include "app/setup.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <system_error>
 
@@ -63,7 +64,26 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     for (render::PixelFormat f :
          {render::PixelFormat::xrgb8888(), render::PixelFormat::rgb565(), render::PixelFormat::rgb888()})
         if (f.same_layout(format)) rec.setting("format", f.name);
+    if (o.best > 0) rec.setting("best", std::to_string(o.best));
     if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");
+}
+
+std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
+    if (choice == "none") return nullptr;
+    std::error_code ec;
+    const std::filesystem::path dir = std::filesystem::path(choice).parent_path();
+    if (!choice.empty() && !dir.empty() && !std::filesystem::is_directory(dir, ec))
+        usage_error("--scores " + choice + ": there is no directory " + dir.string() +
+                    ": make it, or give a file in one that exists (or none).");
+    std::string path = choice, error;
+    if (path.empty()) path = platform::state_file("scores", error);
+    if (path.empty()) {
+        std::fprintf(stderr, "noneuclid: the high scores are not kept: %s.\n", error.c_str());
+        return nullptr;
+    }
+    auto table = std::make_unique<HighScoreTable>(path);
+    std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", table->path().c_str(), table->best());
+    return table;
 }
 
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {
@@ -79,6 +99,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.attract.sweep_seconds = o.sweep;
     so.threads = o.threads;
     so.dt = o.dt;
+    so.best = o.best;
     return so;
 }
 

@@ -2,8 +2,10 @@
 // HUD's font, the session's options.
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "app/high_scores.hpp"
 #include "app/options.hpp"
 #include "app/recorder.hpp"
 #include "app/platform.hpp"
@@ -25,6 +27,11 @@ std::string font_setting(const platform::LoadedFont& f);
 // frame count follow as the run goes, from the frame loop).
 void record_settings(Recorder& rec, const Options& o, const std::string& display, const platform::LoadedFont& font,
                      const render::PixelFormat& format);
+// The high-score table of a game (app/high_scores.hpp): the file `choice` names, or "" for the
+// state directory's "scores" (platform::state_file); null for "none", or when there is no state
+// directory (said in one line on stderr). Says where the table is, in one line. A file in a
+// directory that does not exist is a UsageError.
+std::unique_ptr<HighScoreTable> open_scores(const std::string& choice);
 // The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
 

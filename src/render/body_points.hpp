@@ -170,10 +170,11 @@ inline void draw_screen_points(const Canvas& c, const SubPoint* pts, std::size_t
     }
 }
 
-// Whether the options draw this body (grid bodies and the others can each be left out).
+// Whether the options draw this body (grid bodies and the others can each be left out; a
+// game's spare slots and a blinking ship's dark frames are not drawn).
 template <class B>
 bool body_shown(const B& b, const DrawOptions& o) {
-    return b.desc->grid ? o.grids : o.bodies;
+    return b.active && !b.hidden && (b.desc->grid ? o.grids : o.bodies);
 }
 
 // A body's colour as the options draw it, as the rasteriser takes it.

@@ -5,7 +5,8 @@
 // Rows are `stride` bytes apart (fbdev's line_length; may exceed width * bytes per pixel).
 // Pixels are little-endian words of 16, 24 or 32 bits. Fast paths exist for RGB565 and
 // XRGB8888; every other 16/24/32-bit layout (RGB888, BGR orders, ...) goes through the
-// general packer. The canvas owns nothing: no heap, no OS.
+// general packer. A format may name bits that every pixel keeps set: the alpha byte of a
+// browser's RGBA8888, which must be opaque. The canvas owns nothing: no heap, no OS.
 #pragma once
 
 #include <cstddef>
@@ -26,6 +27,8 @@ struct PixelFormat {
     uint8_t bits_per_pixel = 32;
     Channel red, green, blue;
     const char* name = "custom";
+    Channel opaque{};  // bits set in every pixel (an alpha channel kept opaque), or none
+
 
     static constexpr PixelFormat rgb565() { return {16, {11, 5}, {5, 6}, {0, 5}, "rgb565"}; }
     static constexpr PixelFormat bgr565() { return {16, {0, 5}, {5, 6}, {11, 5}, "bgr565"}; }
@@ -34,32 +37,48 @@ struct PixelFormat {
     // 24-bit: bytes in memory B, G, R (little-endian word 0xRRGGBB), as fbdev reports red at 16.
     static constexpr PixelFormat rgb888() { return {24, {16, 8}, {8, 8}, {0, 8}, "rgb888"}; }
     static constexpr PixelFormat bgr888() { return {24, {0, 8}, {8, 8}, {16, 8}, "bgr888"}; }
+    // A browser canvas's ImageData: bytes in memory R, G, B, A, with A always 255.
+    static constexpr PixelFormat rgba8888() { return {32, {0, 8}, {8, 8}, {16, 8}, "rgba8888", {24, 8}}; }
 
     constexpr int bytes_per_pixel() const { return bits_per_pixel / 8; }
     constexpr bool is_rgb565() const {
         return bits_per_pixel == 16 && red.offset == 11 && red.length == 5 && green.offset == 5 &&
-               green.length == 6 && blue.offset == 0 && blue.length == 5;
+               green.length == 6 && blue.offset == 0 && blue.length == 5 && opaque.length == 0;
     }
     constexpr bool is_xrgb8888() const {
         return bits_per_pixel == 32 && red.offset == 16 && red.length == 8 && green.offset == 8 &&
-               green.length == 8 && blue.offset == 0 && blue.length == 8;
+               green.length == 8 && blue.offset == 0 && blue.length == 8 && opaque.length == 0;
     }
-    // The same word size and channels (the name aside).
+    // 32 bits with each colour an 8-bit channel on a byte of its own (xrgb8888, xbgr8888,
+    // rgba8888): the rasteriser blends these with one integer formula, so that they all hold the
+    // same colours after the same drawing.
+    constexpr bool byte_channels() const {
+        auto byte = [](Channel c) { return c.length == 8 && c.offset % 8 == 0; };
+        return bits_per_pixel == 32 && byte(red) && byte(green) && byte(blue) && red.offset != green.offset &&
+               green.offset != blue.offset && red.offset != blue.offset;
+    }
+    // The same word size, channels and opaque bits (the name aside).
     constexpr bool same_layout(const PixelFormat& o) const {
         auto same = [](Channel a, Channel b) { return a.offset == b.offset && a.length == b.length; };
-        return bits_per_pixel == o.bits_per_pixel && same(red, o.red) && same(green, o.green) && same(blue, o.blue);
+        return bits_per_pixel == o.bits_per_pixel && same(red, o.red) && same(green, o.green) && same(blue, o.blue) &&
+               opaque_bits() == o.opaque_bits();
     }
     // The formats the canvas can pack: 16, 24 or 32 bits, channels of 1..8 bits inside the word.
     constexpr bool supported() const {
         auto ok = [this](Channel c) { return c.length >= 1 && c.length <= 8 && c.offset + c.length <= bits_per_pixel; };
-        return (bits_per_pixel == 16 || bits_per_pixel == 24 || bits_per_pixel == 32) && ok(red) && ok(green) && ok(blue);
+        return (bits_per_pixel == 16 || bits_per_pixel == 24 || bits_per_pixel == 32) && ok(red) && ok(green) && ok(blue) &&
+               (opaque.length == 0 || ok(opaque));
+    }
+    // The bits every pixel word has set.
+    constexpr uint32_t opaque_bits() const {
+        return opaque.length == 0 ? 0 : ((opaque.length >= 32 ? ~0u : (1u << opaque.length) - 1) << opaque.offset);
     }
 
     // 8-bit channels to the pixel word (each channel rounded to its length).
     constexpr uint32_t pack(Rgb c) const {
         if (is_xrgb8888()) return uint32_t{c.r} << 16 | uint32_t{c.g} << 8 | c.b;
         if (is_rgb565()) return uint32_t(c.r >> 3) << 11 | uint32_t(c.g >> 2) << 5 | uint32_t(c.b >> 3);
-        return scale_down(c.r, red) | scale_down(c.g, green) | scale_down(c.b, blue);
+        return scale_down(c.r, red) | scale_down(c.g, green) | scale_down(c.b, blue) | opaque_bits();
     }
     // The pixel word back to 8-bit channels (the top bits replicated into the low ones, so that
     // full scale is 255).

@@ -2,7 +2,63 @@
 
 #include <cstdio>
 
+#include "render/raster.hpp"
+
 namespace noneuclid::render {
+
+namespace {
+
+// A line of text centred on x.
+void centred(const Canvas& c, const Font& font, int x, int y, const char* text, Rgb color, int scale) {
+    draw_text(c, font, x - text_width(font, text, scale) / 2, y, text, color, scale);
+}
+
+// A life: a little ship, its nose up, `size` pixels tall, top-left at (x, y).
+void life(const Canvas& c, int x, int y, int size, Rgb color) {
+    const SubPoint p[3] = {to_sub(x + size * 0.35, y), to_sub(x + size * 0.7, y + size), to_sub(x, y + size)};
+    draw_polyline(c, p, 3, true, color);
+}
+
+// The game's corner (score, level, lives) and its screen in the middle.
+void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, int margin, int line, Rgb color, Rgb dim) {
+    const HudGame& g = h.game;
+    char text[64];
+    std::snprintf(text, sizeof text, "SCORE %ld", g.score);
+    draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin, text, color, scale);
+    std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+    draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin + line, text, dim, scale);
+    const int size = font.height * scale;
+    for (int i = 0; i < g.lives && i < 10; ++i)
+        life(c, c.width() - margin - (i + 1) * (size + 2 * scale), margin + 2 * line, size, color);
+    const int big = scale * (c.height() >= 400 ? 3 : 2), mid = c.width() / 2;
+    int y = c.height() / 2 - font.height * big;
+    switch (g.screen) {
+        case HudGame::none: return;
+        case HudGame::ready:
+            centred(c, font, mid, y, "PRESS FIRE", color, big);
+            y += font.height * big + line;
+            std::snprintf(text, sizeof text, "BEST %ld", g.best);
+            centred(c, font, mid, y, text, dim, scale);
+            return;
+        case HudGame::over:
+            centred(c, font, mid, y, "GAME OVER", color, big);
+            y += font.height * big + line;
+            std::snprintf(text, sizeof text, g.new_best ? "SCORE %ld  NEW BEST" : "SCORE %ld", g.score);
+            centred(c, font, mid, y, text, color, scale);
+            if (!g.new_best) {
+                std::snprintf(text, sizeof text, "BEST %ld", g.best);
+                centred(c, font, mid, y + line, text, dim, scale);
+            }
+            return;
+        case HudGame::new_level:
+            std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+            centred(c, font, mid, y, text, color, big);
+            centred(c, font, mid, y + font.height * big + line, curvature_word(h.K), dim, scale);
+            return;
+    }
+}
+
+}  // namespace
 
 const char* curvature_word(double K) { return K > 1e-5 ? "spherical" : (K < -1e-5 ? "hyperbolic" : "flat"); }
 
@@ -23,6 +79,7 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
         draw_text(c, font, margin, y, text, dim, scale);
     }
     draw_text(c, font, margin, c.height() - margin - font.height * scale, h.controls, dim, scale);
+    if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 
 }  // namespace noneuclid::render

@@ -1,7 +1,9 @@
 // The heads-up display: K with "spherical / flat / hyperbolic", the frame rate, the scene and
 // projection, and a line of controls the caller supplies, in a bitmap font (a PSF console font
 // when the platform found one, the built-in one otherwise). Drawn top-left and bottom-left
-// over the picture; allocates nothing.
+// over the picture. With a game: the score, level and lives top-right (the lives as little
+// ships), and in the middle the "press fire" screen, the game-over screen with the score, or
+// the new level's number and K. Allocates nothing.
 #pragma once
 
 #include "render/canvas.hpp"
@@ -9,7 +11,18 @@
 
 namespace noneuclid::render {
 
+// The game's part of the HUD (world/game.hpp), as plain numbers.
+struct HudGame {
+    enum Screen : uint8_t { none, ready, over, new_level };  // what the middle of the screen shows
+    bool on = false;
+    Screen screen = none;
+    long score = 0, best = 0;  // best: the high score before this game, or this one if higher
+    bool new_best = false;     // the game just over beat the high score
+    int lives = 0, level = 0;
+};
+
 struct HudInfo {
+    HudGame game;
     double K = 0;
     double fps = 0;            // <= 0: not shown (a still picture)
     const char* scene = "";

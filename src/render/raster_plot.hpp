@@ -15,8 +15,21 @@ namespace {
 
 static_assert(std::endian::native == std::endian::little, "pixel words are stored little-endian");
 
+// x / 255 rounded to the nearest whole number, for x <= 255 * 255, by shifts.
+constexpr uint32_t div255_rounded(uint32_t x) {
+    x += 128;
+    return (x + (x >> 8)) >> 8;
+}
+constexpr bool div255_exact() {
+    for (uint32_t x = 0; x <= 255 * 255; ++x)
+        if (div255_rounded(x) != (x + 127) / 255) return false;
+    return true;
+}
+static_assert(div255_exact(), "div255_rounded is x / 255 rounded for every product of two 8-bit values");
+
 // Where pixels go: into a canvas (one instantiation per pixel size, writing whole words, with
-// integer blends for the two fast formats), or to a visitor (tests, counting).
+// integer blends for RGB565 and for 32-bit words of byte channels, xrgb8888 and the browser's
+// rgba8888 alike), or to a visitor (tests, counting).
 template <int Bpp>
 struct CanvasSink {
     static constexpr int bytes = Bpp;
@@ -26,9 +39,12 @@ struct CanvasSink {
     uint8_t* base;
     std::ptrdiff_t stride;
     bool fast565, fast8888;
+    uint32_t rs, gs, bs, fill;  // fast8888: the channels' shifts, and the bits pack() sets besides
     CanvasSink(const Canvas& canvas, Rgb col)
         : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
-          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().is_xrgb8888()) {}
+          fast565(canvas.format().is_rgb565()), fast8888(canvas.format().byte_channels()),
+          rs(canvas.format().red.offset), gs(canvas.format().green.offset), bs(canvas.format().blue.offset),
+          fill(canvas.format().opaque_bits()) {}
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
@@ -44,10 +60,13 @@ struct CanvasSink {
             p[0] = static_cast<uint8_t>(word), p[1] = static_cast<uint8_t>(word >> 8), p[2] = static_cast<uint8_t>(word >> 16);
         }
     }
-    // dst + (src - dst) * a / 255 per channel; a / 255 as (a * 257 + 128) >> 16 over 8-bit values.
+    // dst + (src - dst) * a / 255 per channel, rounded to the nearest level (half away from zero):
+    // Canvas::blend's result, so that every format holds the same colours, and never beyond src.
+    // Without a branch or a division: |src - dst| by its sign mask m, then div255_rounded.
     static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
-        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d);
-        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((diff * static_cast<int32_t>(a) * 257 + (diff >= 0 ? 32768 : -32768)) >> 16));
+        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d), m = diff >> 31;
+        const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
+        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
     }
     // The pixel at p blended with coverage alpha in 1..255: what blend(x, y, alpha) writes there,
     // for the pixel at p, with the format's arithmetic inlined.
@@ -82,9 +101,9 @@ struct CanvasSink {
                 uint32_t d;
                 std::memcpy(&d, p, 4);
                 const uint32_t a = static_cast<uint32_t>(alpha);
-                const uint32_t r = mix8(color.r, (d >> 16) & 0xFF, a), g = mix8(color.g, (d >> 8) & 0xFF, a),
-                               b = mix8(color.b, d & 0xFF, a);
-                const uint32_t out = (d & 0xFF000000u) | r << 16 | g << 8 | b;
+                const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
+                               b = mix8(color.b, (d >> bs) & 0xFF, a);
+                const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
                 std::memcpy(p, &out, 4);
                 return;
             }

@@ -1,10 +1,11 @@
-// What drawing a rigid body needs that changes only with K: each vertex as its local 3-vector
-// about the centre, and each edge's length with the first halving weight of its adaptive
-// tessellation (render/edge_curve.hpp; a rigid motion keeps the edge's length, so it comes from
-// the local polar vertices). One per body, owned by the drawing's scratch
+// What drawing a rigid body needs that changes only with K and its shape: each vertex as its
+// local 3-vector about the centre, and each edge's length with the first halving weight of its
+// adaptive tessellation (render/edge_curve.hpp; a rigid motion keeps the edge's length, so it
+// comes from the local polar vertices). One per body, owned by the drawing's scratch
 // (DrawScratch, ParallelScratch), made for the body when the scratch is prepared (this
 // allocates), and refreshed in place, without allocating, when K differs from the K it was
-// last refreshed at. The threaded frame hands each body to one thread, which alone refreshes
+// last refreshed at or the body took a new shape of as many vertices (world::Body::shape). The
+// threaded frame hands each body to one thread, which alone refreshes
 // that body's cache: no cache is written by two threads at once.
 #pragma once
 
@@ -23,6 +24,7 @@ template <class T>
 struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be another thread's)
     using Math = SlerpMath<T>;
     T K{};
+    uint32_t shape = 0;  // the body's shape count it was made for (world::Body::shape)
     bool valid = false;
     std::vector<geo::Vec3<T>> local;  // per vertex
     std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
@@ -46,8 +48,6 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
 
     // Sized for body b, its parts that do not depend on K set; not valid until refreshed.
     void make(const world::Body<T>& b) {
-        using std::cos, std::sin;  // and fx:: ones by ADL for fixed
-        using geo::sine_of_half;
         const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
         valid = false;
         local.assign(n, {});
@@ -56,23 +56,33 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
         u.assign(edges, {});
         h.assign(edges, {});
         walked.assign(edges, 0);
-        cos_phi.clear(), sin_phi.clear(), half_sine.clear(), radial.clear();
-        for (const geo::Polar<T>& v : b.local) cos_phi.push_back(cos(v.theta)), sin_phi.push_back(sin(v.theta));
+        cos_phi.assign(n, T{}), sin_phi.assign(n, T{}), half_sine.assign(edges, {}), radial.assign(edges, kNotRadial);
+        set_angles(b);
+    }
+    // The parts that depend on the shape alone, in place (a game's asteroid takes a new shape
+    // in a body of the same vertex count: nothing is allocated).
+    void set_angles(const world::Body<T>& b) {
+        using std::cos, std::sin;  // and fx:: ones by ADL for fixed
+        using geo::sine_of_half;
+        const std::size_t n = b.local.size();
+        for (std::size_t i = 0; i < n; ++i) cos_phi[i] = cos(b.local[i].theta), sin_phi[i] = sin(b.local[i].theta);
         all_radial = true;
-        for (std::size_t e = 0; e < edges; ++e) {
+        for (std::size_t e = 0; e < half_sine.size(); ++e) {
             const geo::Polar<T>&p = b.local[e], &q = b.local[(e + 1) % n];
-            half_sine.push_back(sine_of_half(p.theta - q.theta));
+            half_sine[e] = sine_of_half(p.theta - q.theta);
             const T turn = p.theta > q.theta ? p.theta - q.theta : q.theta - p.theta;
-            radial.push_back(p.r == T(0) || q.r == T(0) || turn == geo::pi_v<T> ? kOppositeSides
-                             : turn == T(0)                                     ? kSameSide
-                                                                                : kNotRadial);
-            all_radial = all_radial && radial.back() != kNotRadial;
+            radial[e] = p.r == T(0) || q.r == T(0) || turn == geo::pi_v<T> ? kOppositeSides
+                        : turn == T(0)                                     ? kSameSide
+                                                                           : kNotRadial;
+            all_radial = all_radial && radial[e] != kNotRadial;
         }
+        shape = b.shape, valid = false;
     }
 
     // The cache at curvature K for body b (the body it was made for), refreshed first if K
     // changed since.
     const ShapeCache& refresh(T curvature, const world::Body<T>& b) {
+        if (shape != b.shape) set_angles(b);
         if (valid && K == curvature) return *this;
         const std::size_t n = b.local.size(), edges = walked.size();
         for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once

@@ -1,5 +1,7 @@
 #include "world/board.hpp"
 
+#include <utility>
+
 #include "geometry/geometry.hpp"
 #include "world/quote.hpp"
 #include "world/text_file.hpp"
@@ -36,11 +38,13 @@ std::vector<std::string> strings(const toml::table& t, const char* key, const st
     return out;
 }
 
+// Reads `root` over `b`: a key the file sets replaces b's value, one it leaves out keeps it (a
+// fresh Board's defaults for a board file; the board's own values for an override).
 void read_board(const toml::table& root, Board& b) {
     const Reader r(root, "");
     r.only({"name", "models", "display", "gpio", "evdev", "attract", "button"});
     b.name = r.plain_string("name", b.name);
-    b.models = strings(root, "models", "");
+    if (root.get("models")) b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
         d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "threads"});
@@ -62,7 +66,7 @@ void read_board(const toml::table& root, Board& b) {
     if (const toml::table* t = section(root, "gpio")) {
         const Reader g(*t, "gpio: ");
         g.only({"chip", "debounce_ms"});
-        b.chips = strings(*t, "chip", "gpio: ");
+        if (t->get("chip")) b.chips = strings(*t, "chip", "gpio: ");
         b.debounce_ms = static_cast<int>(g.integer("debounce_ms", b.debounce_ms, 0, 1000, "milliseconds"));
     }
     if (const toml::table* t = section(root, "evdev")) {
@@ -78,6 +82,7 @@ void read_board(const toml::table& root, Board& b) {
         b.sweep_seconds = a.number("sweep_seconds", b.sweep_seconds, 4, 1e5, "seconds for K from -1 to +1");
     }
     if (const toml::array* buttons = tables(root, "button")) {
+        b.buttons.clear();  // a file's buttons are the whole wiring, never added to another's
         for (const toml::node& n : *buttons) {
             const toml::table& t = *n.as_table();
             const Reader br(t, "button: ");
@@ -123,6 +128,18 @@ bool load_board_file(const std::string& path, Board& out, BoardError& error) {
         return false;
     }
     return parse_board(text, path, out, error);
+}
+
+bool overlay_board_file(const std::string& path, Board& board, BoardError& error) {
+    std::string text, why;
+    if (!read_text_file(path, kBoardFileLimit, "a board file", text, why)) {
+        error = {path, 0, 0, "the board override: " + why + ": fix its permissions or remove it"};
+        return false;
+    }
+    Board over = board;
+    if (!tomlr::parse_toml(text, path, error, [&](const toml::table& root) { read_board(root, over); })) return false;
+    board = std::move(over);
+    return true;
 }
 
 }  // namespace noneuclid::world

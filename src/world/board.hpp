@@ -85,4 +85,10 @@ using BoardError = SceneError;
 bool parse_board(const std::string& text, const std::string& name, Board& out, BoardError& error);
 bool load_board_file(const std::string& path, Board& out, BoardError& error);
 
+// A board file read over `board` (a kiosk's local settings, /etc/noneuclid/board.toml): each
+// key it sets replaces the board's value, its [[button]] entries (if any) replace all of the
+// board's buttons, and what it leaves out stays as the board has it; `board.file` still names
+// the board's own file. On failure `board` is unchanged.
+bool overlay_board_file(const std::string& path, Board& board, BoardError& error);
+
 }  // namespace noneuclid::world

@@ -1,9 +1,16 @@
 // `noneuclid dump`: a world's state as one line of JSON per frame (JSON Lines).
 //
-//   {"frame":0,"t":0,"K":-1,"bodies":[{"name":"ship","center":[r,theta],"facing":psi,
+//   {"frame":0,"t":0,"K":-1,"bodies":[{"name":"ship","kind":"ship","center":[r,theta],"facing":psi,
 //    "travel":[speed,chi],"vertices":[[r,theta],...],"edges":[[[r,theta],...],...],
 //    "screen":[[[x,y],...],...]}]}
 //
+// kind is ship, asteroid, bullet, grid or body; a game's unused slots are left out, and its
+// asteroids and bullets are named by their number ("asteroid 12": the twelfth spawned). A scene
+// with a game gives each asteroid its "size" (0 large, 1 medium, 2 small) after its kind, and
+// adds after "K": "phase" (ready, playing or over), "score", "lives", "level" and
+// "events", what happened in the step that led to this frame:
+//   {"start":true}  {"hit":["bullet 3","asteroid 12"]}  {"crash":"asteroid 7"}  {"level":2}
+//   {"over":1230} (the final score)
 // Angles in degrees in (-180, 180]; lengths in world units. Each edge lists its points from one
 // vertex to the next, both ends included (tessellation + 1 points); "screen" holds the same
 // points in pixels with the same nesting, for a canvas of the given size: the disc the
@@ -49,6 +56,43 @@ inline void polar(std::string& out, double r, double theta) {
     num(out, degrees(theta));
     out += ']';
 }
+// "asteroid 12", "bullet 3": a game's body by its number.
+inline void serial_name(std::string& out, BodyKind kind, uint32_t serial) {
+    out += kind_name(kind);
+    out += ' ';
+    out += std::to_string(serial);
+}
+template <class G>
+void game_fields(const G& g, std::string& out) {
+    if (!g.on()) return;
+    static const char* const phases[] = {"ready", "playing", "over"};
+    out += ",\"phase\":\"";
+    out += phases[static_cast<int>(g.phase)];
+    out += "\",\"score\":" + std::to_string(g.score) + ",\"lives\":" + std::to_string(g.lives) +
+           ",\"level\":" + std::to_string(g.level) + ",\"events\":[";
+    for (int i = 0; i < g.event_count(); ++i) {
+        const GameEvent& e = g.events()[i];
+        if (i) out += ',';
+        switch (e.kind) {
+            case GameEvent::start: out += "{\"start\":true}"; break;
+            case GameEvent::hit:
+                out += "{\"hit\":[\"";
+                serial_name(out, BodyKind::bullet, e.bullet);
+                out += "\",\"";
+                serial_name(out, BodyKind::asteroid, e.asteroid);
+                out += "\"]}";
+                break;
+            case GameEvent::crash:
+                out += "{\"crash\":\"";
+                serial_name(out, BodyKind::asteroid, e.asteroid);
+                out += "\"}";
+                break;
+            case GameEvent::level: out += "{\"level\":" + std::to_string(e.value) + "}"; break;
+            case GameEvent::over: out += "{\"over\":" + std::to_string(e.value) + "}"; break;
+        }
+    }
+    out += ']';
+}
 }  // namespace detail
 
 // Appends one frame's line (with its newline) to `out`.
@@ -65,11 +109,14 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
     num(out, world.time);
     out += ",\"K\":";
     num(out, K);
+    detail::game_fields(world.game(), out);
     out += ",\"bodies\":[";
     std::vector<Polar<T>> v;
     std::vector<std::vector<Polar<T>>> edges;
+    bool first = true;
     for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
         const Body<T>& b = world.bodies[bi];
+        if (!b.active) continue;
         v.resize(b.local.size());
         world.vertices(b, v.data());
         const std::size_t n = v.size();
@@ -80,13 +127,22 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
             W::engine::edge_points(world.K, v[e], v[(e + 1) % n], b.desc->tessellation,
                                    [&](int k, Polar<T> p) { edges[e][static_cast<std::size_t>(k)] = p; });
         }
-        if (bi) out += ',';
+        if (!first) out += ',';
+        first = false;
         out += "{\"name\":\"";
-        for (char c : b.desc->name) {
-            if (c == '"' || c == '\\') out += '\\';
-            if (static_cast<unsigned char>(c) >= 0x20) out += c;
+        if (b.serial != 0) {
+            detail::serial_name(out, b.desc->kind(), b.serial);
+        } else {
+            for (char c : b.desc->name) {
+                if (c == '"' || c == '\\') out += '\\';
+                if (static_cast<unsigned char>(c) >= 0x20) out += c;
+            }
         }
-        out += "\",\"center\":";
+        out += "\",\"kind\":\"";
+        out += kind_name(b.desc->kind());
+        out += '"';
+        if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
+        out += ",\"center\":";
         detail::polar(out, static_cast<double>(b.centre.r), static_cast<double>(b.centre.theta));
         out += ",\"facing\":";
         num(out, detail::degrees(static_cast<double>(b.facing)));

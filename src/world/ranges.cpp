@@ -16,7 +16,7 @@ std::string number(double v) {
 }  // namespace
 
 bool body_moves(const SceneBody& b) {
-    return b.speed > 0 || b.accel > 0 || b.controlled;
+    return b.speed > 0 || b.accel > 0 || b.controlled || b.role != BodyKind::body;  // a game's slots move
 }
 
 double body_reach(const SceneBody& b, double R) {

@@ -31,7 +31,8 @@ struct Ranges {
     static constexpr double kSpeed = 20;
 };
 
-// Whether the body ever moves (a velocity, an acceleration, or the ship's thrust).
+// Whether the body ever moves (a velocity, an acceleration, the ship's thrust, or a game's
+// asteroid or bullet).
 bool body_moves(const SceneBody& b);
 
 // How far from O the body's farthest vertex can get: its centre, or for a body that moves

@@ -19,6 +19,14 @@ struct Rgb {
     friend bool operator==(Rgb, Rgb) = default;
 };
 
+// What a body is, as `dump` names it: the ship (the controlled body), a game's asteroid or
+// bullet, a grid line, or any other body.
+enum class BodyKind : uint8_t { body, ship, asteroid, bullet, grid };
+inline const char* kind_name(BodyKind k) {
+    static const char* const names[] = {"body", "ship", "asteroid", "bullet", "grid"};
+    return names[static_cast<int>(k)];
+}
+
 struct SceneBody {
     std::string name;
     double r = 0, theta_deg = 0;              // position
@@ -35,6 +43,36 @@ struct SceneBody {
     std::vector<Vertex> vertices;
     bool controlled = false;  // the ship: thrust and turn act on it
     bool grid = false;        // part of a grid (drawn dimmer); otherwise an ordinary body
+    BodyKind role = BodyKind::body;  // asteroid or bullet: a game's slot (world/game.hpp)
+    BodyKind kind() const { return controlled ? BodyKind::ship : grid ? BodyKind::grid : role; }
+};
+
+// The Asteroids game (world/game.hpp), when a scene has one: its rules and what it spawns.
+// Lengths in world units, times in seconds; docs/game.md documents each with its default.
+struct GameSettings {
+    bool on = false;
+    uint32_t seed = 1;               // the game's random numbers: the same seed, the same game
+    int lives = 3;
+    int asteroids = 4;               // large asteroids on the first level
+    int asteroids_step = 1;          // this many more on each level after it
+    int asteroids_max = 8;           // at most this many at a level's start (4 slots each)
+    double sizes[3] = {0.36, 0.2, 0.11};  // large, medium, small: the mean radius
+    int points[3] = {20, 50, 100};        // the score for hitting each size
+    double speed_min = 0.08, speed_max = 0.3;  // a new asteroid's drift
+    double spin_deg = 40;            // at most this fast, either way, degrees a second
+    int vertices = 10;               // of each asteroid
+    double split_speed = 0.12;       // how fast the two pieces of a hit asteroid fly apart
+    double bullet_speed = 1.6;       // from the ship, plus the ship's own velocity
+    double bullet_range = 2.6;       // the distance a bullet flies before it is spent
+    double bullet_cooldown = 0.2;    // the least time between two shots
+    int bullets = 12;                // bullets in flight at once, at most
+    double ship_speed = 1.2;         // the ship's top speed
+    double invulnerable = 2.5;       // after a respawn (the ship blinks)
+    double respawn_delay = 1.5;      // from a crash to the respawn
+    double level_pause = 1.5;        // from a cleared level to the next one's asteroids
+    double game_over_seconds = 5;    // the game-over screen, before the "press fire" one
+    std::vector<double> levels = {0, -1, 1};  // K at each level's start, in turn (empty: unchanged)
+    Rgb asteroid_color{200, 190, 170}, bullet_color{255, 255, 160};
 };
 
 struct Scene {
@@ -47,6 +85,7 @@ struct Scene {
     double curvature_rate = 0.5;    // curvature up/down while held, per second
     double sweep_rate = 0;          // K changes by this per second on its own (fig17), bouncing at +-1
     std::vector<SceneBody> bodies;
+    GameSettings game;             // game.on: the Asteroids game runs in this scene
 };
 
 // Parameters of the parametric built-in scenes.
@@ -68,5 +107,12 @@ bool builtin_scene(const std::string& name, const SceneParams& params, Scene& ou
 // a sentence in `why` if the lines would take the world over its budget (budget.hpp).
 bool add_axis_grid(Scene& scene, double spacing, double length, double step, Rgb color, std::string& why);
 bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb color, std::string& why);
+
+// The game's bodies, for a scene whose game is on (world/game_scene.cpp): its asteroid slots
+// (4 for each of asteroids_max: a large one's pieces) and bullet slots, appended. False, adding
+// nothing, with a sentence in `why` (no full stop) if the settings do not fit the scene: no
+// ship, or a ship the collision tests cannot take (over kGameMaxVertices vertices, not
+// star-shaped about its centre, or larger than 0.5).
+bool add_game_slots(Scene& scene, std::string& why);
 
 }  // namespace noneuclid::world

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "world/game.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
 #include "world/text_file.hpp"
@@ -86,9 +87,65 @@ void read_grid(const toml::table& t, Scene& scene) {
     }
 }
 
+// [key] = [a, b, ...]: exactly `n` numbers in [lo, hi] (n = 0: any number of them).
+std::vector<double> numbers(const Reader& r, const char* key, std::size_t n, double lo, double hi, const char* what) {
+    const toml::node* node = r.table().get(key);
+    const toml::array* a = node ? node->as_array() : nullptr;
+    if (node && (!a || (n > 0 && a->size() != n)))
+        throw Bad{node->source(), "game: expected " + quote(key) + " = [" + what + "], found " +
+                                      (a ? "an array of " + std::to_string(a->size()) : std::string(type_name(*node)))};
+    std::vector<double> out;
+    if (a)
+        for (const toml::node& e : *a) out.push_back(r.as_number(e, key, lo, hi, what));
+    return out;
+}
+
+// [game]: the Asteroids game's settings (docs/game.md), over the defaults.
+void read_game(const toml::table& t, GameSettings& g) {
+    const Reader r(t, "game: ");
+    r.only({"seed", "lives", "asteroids", "asteroids_step", "asteroids_max", "sizes", "points", "asteroid_speed",
+            "asteroid_spin", "asteroid_vertices", "split_speed", "bullet_speed", "bullet_range", "bullet_cooldown",
+            "bullets", "ship_speed", "invulnerable", "respawn_delay", "level_pause", "game_over", "levels",
+            "asteroid_color", "bullet_color"});
+    g.on = true;
+    g.seed = static_cast<uint32_t>(r.integer("seed", static_cast<long>(g.seed), 0, 2147483647L, "the random numbers' seed"));
+    g.lives = static_cast<int>(r.integer("lives", g.lives, 1, 99, "ships"));
+    g.asteroids = static_cast<int>(r.integer("asteroids", g.asteroids, 1, 64, "large asteroids on the first level"));
+    g.asteroids_step = static_cast<int>(r.integer("asteroids_step", g.asteroids_step, 0, 64, "more on each level"));
+    g.asteroids_max = static_cast<int>(r.integer("asteroids_max", std::max(g.asteroids_max, g.asteroids), g.asteroids,
+                                                 64, "large asteroids at a level's start, at most; at least 'asteroids'"));
+    const std::vector<double> sizes = numbers(r, "sizes", 3, 0.02, 0.5, "large, medium, small: radii from 0.02 to 0.5");
+    if (!sizes.empty()) {
+        if (!(sizes[0] >= sizes[1] && sizes[1] >= sizes[2]))
+            throw Bad{t.get("sizes")->source(), "game: expected 'sizes' from the largest to the smallest"};
+        for (int i = 0; i < 3; ++i) g.sizes[i] = sizes[static_cast<std::size_t>(i)];
+    }
+    const std::vector<double> points = numbers(r, "points", 3, 0, 1e6, "large, medium, small: whole points");
+    for (std::size_t i = 0; i < points.size(); ++i) g.points[i] = static_cast<int>(points[i]);
+    r.pair("asteroid_speed", g.speed_min, g.speed_max, 0, 3, "slowest, fastest in world units per second");
+    if (g.speed_max < g.speed_min || g.speed_max > 3)
+        throw Bad{t.get("asteroid_speed")->source(), "game: expected 'asteroid_speed' = [slowest, fastest], from 0 to 3"};
+    g.spin_deg = r.number("asteroid_spin", g.spin_deg, 0, 720, "degrees per second, either way");
+    g.vertices = static_cast<int>(r.integer("asteroid_vertices", g.vertices, 5, kGameMaxVertices, "vertices"));
+    g.split_speed = r.number("split_speed", g.split_speed, 0, 3, "world units per second");
+    g.bullet_speed = r.number("bullet_speed", g.bullet_speed, 0.1, 10, "world units per second");
+    g.bullet_range = r.number("bullet_range", g.bullet_range, 0.1, 6, "world units: under a sphere's circumference");
+    g.bullet_cooldown = r.number("bullet_cooldown", g.bullet_cooldown, 0, 10, "seconds");
+    g.bullets = static_cast<int>(r.integer("bullets", g.bullets, 1, 64, "bullets in flight at once"));
+    g.ship_speed = r.number("ship_speed", g.ship_speed, 0.05, Ranges::kSpeed, "world units per second");
+    g.invulnerable = r.number("invulnerable", g.invulnerable, 0, 60, "seconds");
+    g.respawn_delay = r.number("respawn_delay", g.respawn_delay, 0, 60, "seconds");
+    g.level_pause = r.number("level_pause", g.level_pause, 0, 60, "seconds");
+    g.game_over_seconds = r.number("game_over", g.game_over_seconds, 0, 600, "seconds");
+    if (t.get("levels")) g.levels = numbers(r, "levels", 0, -1, 1, "K at each level's start, in turn");
+    g.asteroid_color = r.color("asteroid_color", g.asteroid_color);
+    g.bullet_color = r.color("bullet_color", g.bullet_color);
+}
+
 void read_scene(const toml::table& root, Scene& s) {
     const Reader r(root, "");
-    r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid"});
+    r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
+            "game"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
     s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
@@ -106,6 +163,13 @@ void read_scene(const toml::table& root, Scene& s) {
     if (const toml::array* bodies = tables(root, "body")) {
         int i = 0;
         for (const toml::node& b : *bodies) read_body(*b.as_table(), i++, s);
+    }
+    if (const toml::node* game = root.get("game")) {
+        const toml::table* t = game->as_table();
+        if (!t) throw Bad{game->source(), std::string("expected a [game] table, found ") + type_name(*game)};
+        read_game(*t, s.game);
+        std::string why;
+        if (!add_game_slots(s, why)) throw Bad{t->source(), "game: " + why};
     }
 }
 

@@ -1,4 +1,5 @@
-// The built-in scenes: the paper's figures, the kiosk's default, and a parametric stress scene.
+// The built-in scenes: the paper's figures, the kiosk's default, the Asteroids game, and a
+// parametric stress scene.
 #include <cmath>
 #include <cstdio>
 
@@ -108,6 +109,16 @@ void kiosk(Scene& s) {
     s.bodies.push_back(place(polygon("hexagon", 6, 0.2, 0, {120, 160, 255}), 1.2, 250, 0, 0.08, 20, 12));
     s.bodies.push_back(place(polygon("circle", 24, 0.18, 0, {230, 120, 230}), 2.3, 310, 0, 0.1, 160, 0));
 }
+// The Asteroids game (world/game.hpp) over the axis grid, with its default settings: flat on
+// the first level, hyperbolic on the second, spherical on the third, and round again.
+void asteroids(Scene& s) {
+    s.curvature = 0;
+    std::string unused;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, {45, 58, 80}, unused);  // dimmer than the kiosk's: the game is in front
+    s.bodies.push_back(place(ship(), 0, 0, 90, 0, 90, 0));
+    s.game.on = true;
+    add_game_slots(s, unused);  // the kiosk's ship and the default settings always fit
+}
 void stress(Scene& s, const SceneParams& p) {
     s.curvature = -1;
     uint32_t x = 2463534242u;  // xorshift32: the same scene every time
@@ -184,7 +195,7 @@ bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb co
 }
 
 const char* const* builtin_scene_names() {
-    static const char* const names[] = {"kiosk", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
+    static const char* const names[] = {"kiosk", "asteroids", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
     return names;
 }
 
@@ -197,6 +208,7 @@ bool builtin_scene(const std::string& name, const SceneParams& params, Scene& ou
         return false;
     }
     if (name == "kiosk") kiosk(out);
+    else if (name == "asteroids") asteroids(out);
     else if (name == "fig1") fig1(out);
     else if (name == "fig14") geodesic_motion(out, 90);
     else if (name == "fig15") geodesic_motion(out, 45);

@@ -31,7 +31,9 @@
 
 #include "geometry/geometry.hpp"
 #include "geometry/paper.hpp"
+#include "world/body.hpp"
 #include "world/coast.hpp"
+#include "world/game.hpp"
 #include "world/ranges.hpp"
 #include "world/scene.hpp"
 
@@ -41,19 +43,21 @@ using geo::Polar;
 using geo::Pose;
 
 // What the buttons and keys ask of the world. Held actions (thrust, the turns, curvature up and
-// down) act while held; the others act once, on the press: the next preset, reset, and K set
-// to -1, 0 or +1 (the desktop's keys 1, 2, 3).
+// down, fire) act while held; the others act once, on the press: the next preset, reset, and K
+// set to -1, 0 or +1 (the desktop's keys 1, 2, 3). Fire shoots on its press and again each
+// cooldown while held (world/game.hpp); in a scene without a game it does nothing.
 enum class Action : uint8_t {
-    thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset, hyperbolic, flat, spherical
+    thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset, hyperbolic, flat, spherical,
+    fire
 };
-inline constexpr int kActionCount = 10;
+inline constexpr int kActionCount = 11;
 inline const char* action_name(Action a) {
-    static const char* const names[] = {"thrust",      "left",  "right",      "curvature_up", "curvature_down",
-                                        "preset",      "reset", "hyperbolic", "flat",         "spherical"};
+    static const char* const names[] = {"thrust", "left",       "right", "curvature_up", "curvature_down", "preset",
+                                        "reset",  "hyperbolic", "flat",  "spherical",    "fire"};
     return names[static_cast<int>(a)];
 }
 // Whether the action acts once on its press (rather than while held).
-inline bool acts_on_press(Action a) { return a >= Action::next_preset; }
+inline bool acts_on_press(Action a) { return a >= Action::next_preset && a <= Action::spherical; }
 inline bool parse_action(const std::string& s, Action& out) {
     for (int i = 0; i < kActionCount; ++i)
         if (s == action_name(static_cast<Action>(i))) {
@@ -62,15 +66,6 @@ inline bool parse_action(const std::string& s, Action& out) {
         }
     return false;
 }
-
-template <class T>
-struct alignas(64) Body {
-    Polar<T> centre;
-    T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
-    std::vector<Polar<T>> local;  // (rho, phi from the facing), radians
-    Coast<T> coast;               // the straight stretch it is on (world/coast.hpp)
-    const SceneBody* desc = nullptr;  // name, colour, closed, tessellation, flags
-};
 
 // The engine's geometry: the exact forms, or the paper's (double only).
 template <class T, bool Paper>
@@ -112,8 +107,10 @@ public:
         for (const SceneBody& sb : scene_.bodies) bodies.push_back(make_body(sb));
         // desc pointers refer to scene_ (a copy we own): fix them up after the copy above.
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
+        game_.setup(*this);
         initial_ = bodies;
         initial_K_ = K;
+        initial_game_ = game_;
     }
     World(const World& o) : scene_(o.scene_) { copy_from(o); }
     World& operator=(const World& o) {
@@ -140,6 +137,7 @@ public:
             case Action::hyperbolic: K = T(-1); break;
             case Action::flat: K = T(0); break;
             case Action::spherical: K = T(1); break;
+            case Action::fire: game_.press_fire(); break;
             default: break;
         }
     }
@@ -154,11 +152,16 @@ public:
             if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
         }
         const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
-        const Steering steer{T(scene_.thrust), turn, held(Action::thrust)};
-        for (Body<T>& b : bodies) step_body(b, dt, steer);
+        const Steering steer{T(scene_.thrust), turn, game_.top_speed(T(Ranges::kSpeed)), held(Action::thrust)};
+        for (Body<T>& b : bodies)
+            if (b.active) step_body(b, dt, steer);
         time += static_cast<double>(dt);
         ++frame;
+        game_.step(*this, dt, held(Action::fire));
     }
+
+    // The game, if the scene has one (world/game.hpp): its phase, score, lives, level, events.
+    const Game<T>& game() const { return game_; }
 
     // The next of the scene's presets above the current K (cycling).
     void next_preset() {
@@ -175,6 +178,7 @@ public:
     void reset() {
         bodies = initial_;
         K = initial_K_;
+        game_ = initial_game_;
         sweep_dir_ = 1;
     }
 
@@ -188,6 +192,7 @@ private:
     // What the held keys do to the controlled body this step: thrust along its facing, turn.
     struct Steering {
         T thrust{}, turn{};
+        T top{};  // its top speed (the game's; the world's ceiling otherwise)
         bool thrusting = false;
     };
     // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
@@ -202,6 +207,7 @@ private:
             b.speed = hypot(vx, vy);
             if (b.speed != T(0)) b.travel = atan2(vy, vx);
             if (b.speed > T(Ranges::kSpeed)) b.speed = T(Ranges::kSpeed);  // the ceiling (ranges.hpp)
+            if (b.desc->controlled && b.speed > steer.top) b.speed = steer.top;
         }
         bool walked = false;
         if (b.speed != T(0)) {
@@ -219,7 +225,8 @@ private:
         }
         const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
         if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
-        if (b.centre.r > R) {  // the limit circle
+        b.wrapped = b.centre.r > R;
+        if (b.wrapped) {  // the limit circle
             const T r = T(2) * R - b.centre.r;
             if (walked)
                 b.centre = coast_wrap(b.coast, R);  // the same, in the coast's numbers
@@ -246,6 +253,8 @@ private:
         bodies = o.bodies;
         initial_ = o.initial_;
         initial_K_ = o.initial_K_;
+        game_ = o.game_, initial_game_ = o.initial_game_;
+        game_.rebind(scene_.game), initial_game_.rebind(scene_.game);
         sweep_dir_ = o.sweep_dir_;
         for (int i = 0; i < kActionCount; ++i) held_[i] = o.held_[i];
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
@@ -254,6 +263,7 @@ private:
     Scene scene_;
     std::vector<Body<T>> initial_;
     T initial_K_{};
+    Game<T> game_, initial_game_;
     int sweep_dir_ = 1;
     bool held_[kActionCount] = {};
 };

@@ -93,7 +93,7 @@ TEST(Script, AByteOrderMarkBeforeTheFirstLineIsAccepted) {
     // Only at the start: elsewhere it is a bad token like any other, and shown escaped.
     ASSERT_FALSE(app::parse_script("0 press thrust\n\xEF\xBB\xBF" "1 tap preset\n", "bom.txt", s, err));
     EXPECT_EQ(err.to_string(), "bom.txt:2: expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                               "projection, size, format, aa, hud, font, legend, frames) first, found '\\ufeff1'");
+                               "projection, size, format, aa, hud, font, legend, frames, best) first, found '\\ufeff1'");
 }
 
 // What the file holds reaches the message escaped (world/quote.hpp) and cut to 60 characters.
@@ -105,14 +105,14 @@ TEST(Script, FileContentInMessagesIsQuoted) {
     const std::string mib(1 << 20, 'w');
     const Case cases[] = {
         {"1 press \x1b[2Jwarp\n", "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, projection, hud), found '\\x1b[2Jwarp'"},
+                                  "hyperbolic, flat, spherical, fire, projection, hud), found '\\x1b[2Jwarp'"},
         {"1 press w\0arp now\n"s, "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, projection, hud), found 'w\\x00arp'"},
+                                  "hyperbolic, flat, spherical, fire, projection, hud), found 'w\\x00arp'"},
         {"1 \x9b\xff thrust\n", "expected press, release, tap or attract after the time, found '\\x9b\\xff'"},
         {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
         {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},
         {mib + " press thrust\n", "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                                  "projection, size, format, aa, hud, font, legend, frames) first, found '" +
+                                  "projection, size, format, aa, hud, font, legend, frames, best) first, found '" +
                                       std::string(59, 'w') + "…'"},
         {"scene a\x1b]0;x\x07" "b\n", "the setting 'scene' has a control character or a byte that is not UTF-8: "
                                   "'a\\x1b]0;x\\x07b'"},

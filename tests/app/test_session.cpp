@@ -36,7 +36,9 @@ std::vector<std::pair<double, double>> fly(W& w, app::Autopilot& ap, double seco
         for (const auto& b : w.bodies)
             if (b.desc->controlled) speed = static_cast<double>(b.speed);
         *top_speed = std::fmax(*top_speed, speed);
-        const int n = ap.frame(w.time, static_cast<double>(w.K), speed, ev);
+        app::PilotView v;
+        v.K = static_cast<double>(w.K), v.ship_speed = speed;
+        const int n = ap.frame(w.time, v, ev);
         for (int i = 0; i < n; ++i) {
             world::Action a{};
             EXPECT_TRUE(world::control_action(ev[i].control, a)) << "the autopilot only uses world actions";
@@ -95,13 +97,14 @@ TEST(Attract, APressEndsItReleasesWhatItHeldAndResets) {
     for (int i = 0; i < n - 2; ++i) EXPECT_FALSE(out[i].pressed) << "only releases before the reset";
     // Idle again: it comes back after the idle time, not before.
     world::InputEvent ev[8];
-    EXPECT_EQ(ap.frame(w.time + 4.9, 0, 0, ev), 0);
+    const app::PilotView still{0, 0};
+    EXPECT_EQ(ap.frame(w.time + 4.9, still, ev), 0);
     EXPECT_FALSE(ap.active());
-    EXPECT_GT(ap.frame(w.time + 5.0, 0, 0, ev), 0);
+    EXPECT_GT(ap.frame(w.time + 5.0, still, ev), 0);
     EXPECT_TRUE(ap.active());
     // Off means off.
     app::Autopilot off({0, 20, 0.25}, 0.5);
-    EXPECT_EQ(off.frame(1e6, 0, 0, ev), 0);
+    EXPECT_EQ(off.frame(1e6, still, ev), 0);
     EXPECT_FALSE(off.active());
 }
 
@@ -272,6 +275,51 @@ TEST(Recording, WithAttractModeReplaysPixelExact) { replays_exactly(app::Engine:
 TEST(Recording, DrawnOnThreadsReplaysPixelExact) {
     replays_exactly(app::Engine::fixed, 3, 2);
     replays_exactly(app::Engine::double_, 0, 3);
+}
+
+// A whole game, recorded and replayed: a visitor starts it with fire, turns, thrusts and fires
+// until the ship is lost (one life, fast asteroids), the game-over screen gives way to attract
+// mode, which plays the next game; the replay draws the last frame pixel for pixel, and its
+// dump has the hits, the crash and the end.
+TEST(Recording, AWholeGameReplaysPixelExact) {
+    app::Options o = app::defaults(app::Command::run);
+    o.scene = std::string(NONEUCLID_SOURCE_DIR) + "/tests/world/data/game.toml";
+    o.frames = 1500, o.attract = 3, o.hud = true;
+    o.scores = "none";
+    const std::vector<Key> keys = {{10, Control::fire, true},   {12, Control::fire, false},  {40, Control::fire, true},
+                                   {60, Control::left, true},   {95, Control::left, false},  {120, Control::thrust, true},
+                                   {150, Control::thrust, false}, {170, Control::right, true}, {230, Control::right, false},
+                                   {260, Control::fire, false}};
+    const LiveRun live = run_live(o, keys, render::PixelFormat::rgb565());
+    EXPECT_EQ(differing_bytes(replay(live.recording), live.last), 0);
+    for (const char* line : {"press fire", "release fire", "attract on"})
+        EXPECT_NE(live.recording.find(line), std::string::npos) << line;
+    // The game as dump sees it, from the same recording.
+    const std::string path = temp_file("game.txt");
+    std::FILE* f = std::fopen(path.c_str(), "w");
+    std::fputs(live.recording.c_str(), f);
+    std::fclose(f);
+    std::string a0 = "noneuclid", a1 = "--actions", a2 = path;
+    char* argv[] = {a0.data(), a1.data(), a2.data()};
+    app::Script script;
+    const app::Options d = app::layered_options(3, argv, 1, app::Command::dump, script);
+    const world::Scene scene = app::load_scene(d);
+    const auto s = app::make_session(d.engine, scene, app::session_options(d, scene, "keys"), render::builtin_font(), nullptr);
+    app::ScriptPlayer player(script.events);
+    std::string all, line;
+    s->play_due(player);
+    for (long i = 0; i < o.frames; ++i) {
+        s->step();
+        s->play_due(player);
+        line.clear();
+        s->dump(320, 200, line);
+        all += line;
+    }
+    EXPECT_NE(all.find("{\"start\":true}"), std::string::npos);
+    EXPECT_NE(all.find("{\"hit\":[\"bullet "), std::string::npos);
+    EXPECT_NE(all.find("{\"crash\":\"asteroid "), std::string::npos);
+    EXPECT_NE(all.find("{\"over\":"), std::string::npos);
+    EXPECT_NE(all.find("\"phase\":\"playing\"", all.rfind("{\"over\":")), std::string::npos) << "attract mode played on";
 }
 
 // A window resized during the run: the recording's last size is the last frame's.

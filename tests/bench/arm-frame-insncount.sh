@@ -4,6 +4,8 @@
 #
 #   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
 #   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)
+#   SCENE game:A:B is the game in play with A asteroids and B bullets in flight; its table adds
+#   the stage collide, the game's collision tests alone
 #   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
 #   K=-0.6 to set the curvature (the kiosk starts at K = 0), K=sweep to change it every frame as
 #   attract mode does (the frame stage then rebuilds every body's shape cache); FRAMES=N (default 10)
@@ -38,7 +40,9 @@ echo "instructions per frame on $target: $scene at $size $format${K:+, K = $K} (
 echo
 echo "| stage | fixed | double | float | double/fixed |"
 echo "|---|---:|---:|---:|---:|"
-for stage in frame step backdrop geometry raster copy memcpy; do
+stages="frame step backdrop geometry raster copy memcpy"
+case $scene in game:*) stages="$stages collide" ;; esac
+for stage in $stages; do
     f=$(per_frame "$stage" fixed)
     d=$(per_frame "$stage" double)
     fl=$(per_frame "$stage" float)

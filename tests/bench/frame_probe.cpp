@@ -4,13 +4,16 @@
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
-// ENGINE fixed|double|float, SCENE kiosk|stress|..., FORMAT rgb565|xrgb8888|rgb888; K sets the
+// ENGINE fixed|double|float, SCENE kiosk|stress|... or game:A:B (the asteroids scene in play
+// with A asteroids and B bullets in flight; stage collide: the game's collision tests alone,
+// the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
 // K = sweep changes it every frame as attract mode does, from -0.6 (sweep@K0: from K0), so every
 // body's shape cache (render::ShapeCache) is rebuilt every frame: the worst case of the frame
 // stage.
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,10 +23,66 @@
 #include "render/blit.hpp"
 #include "render/draw_world.hpp"
 #include "render/parallel_frame.hpp"
+#include "world/game.hpp"
 
 namespace {
 
 using namespace noneuclid;
+
+// The asteroids scene set for `asteroids` large asteroids at once and a shot every 0.1 s (16 in
+// flight over a bullet's 1.6 s), the ship safe throughout, so that a few frames keep the counts.
+bool game_scene(const char* name, world::Scene& scene, int& bullets) {
+    int asteroids = 0;
+    if (std::sscanf(name, "game:%d:%d", &asteroids, &bullets) != 2 || asteroids < 1 || bullets < 1) return false;
+    if (!world::builtin_scene("asteroids", {}, scene)) return false;
+    scene.bodies.erase(std::remove_if(scene.bodies.begin(), scene.bodies.end(),
+                                      [](const world::SceneBody& b) { return b.role != world::BodyKind::body && !b.grid && !b.controlled; }),
+                       scene.bodies.end());
+    world::GameSettings& g = scene.game;
+    g.asteroids = g.asteroids_max = asteroids;
+    g.bullets = bullets;
+    g.bullet_cooldown = g.bullet_range / g.bullet_speed / bullets;
+    g.invulnerable = 1e6;
+    g.levels.clear();  // K stays the scene's (or what K= sets)
+    std::string why;
+    return world::add_game_slots(scene, why);
+}
+
+// The game's collision tests on the world as it is (world/game.hpp's broad and narrow phases,
+// with the same functions), without changing it: every bullet against every asteroid, the ship
+// against every asteroid. Returns how many narrow tests found a contact.
+template <class W>
+long collide(const W& w, typename W::scalar dt) {
+    using T = typename W::scalar;
+    geo::Vec3<T> av[world::kGameMaxVertices], ac, sv[world::kGameMaxVertices], sc;
+    long found = 0;
+    const world::Body<T>* ship = nullptr;
+    for (const auto& b : w.bodies)
+        if (b.active && b.desc->controlled) ship = &b;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        const auto& a = w.bodies[i];
+        if (!a.active || a.desc->kind() != world::BodyKind::asteroid) continue;
+        T radius{};
+        for (const auto& v : a.local) radius = v.r > radius ? v.r : radius;
+        bool have = false;
+        auto vectors = [&] {
+            if (!have) geo::body_vectors(w.K, a.centre, a.facing, a.local.data(), a.local.size(), ac, av), have = true;
+        };
+        for (const auto& u : w.bodies) {
+            if (!u.active || u.desc->kind() != world::BodyKind::bullet) continue;
+            if (geo::distance(w.K, u.centre, a.centre) > radius + u.speed * dt) continue;
+            vectors();
+            const geo::Vec3<T> q = geo::to_vec(w.K, u.centre);
+            found += geo::segment_meets_star(ac, av, a.local.size(), q, q);
+        }
+        if (ship && geo::distance(w.K, ship->centre, a.centre) <= radius + T(0.12)) {
+            vectors();
+            geo::body_vectors(w.K, ship->centre, ship->facing, ship->local.data(), ship->local.size(), sc, sv);
+            found += geo::polygons_overlap(ac, av, a.local.size(), sc, sv, ship->local.size());
+        }
+    }
+    return found;
+}
 
 template <class T>
 int run(const std::string& stage, const char* scene_name, int w, int h, render::PixelFormat f, long n, int threads,
@@ -32,7 +91,9 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     world::SceneParams params;
     if (tess > 0) params.tessellation = tess;  // stress only
     if (verts > 0) params.vertices = verts;    // stress only
-    if (!world::builtin_scene(scene_name, params, scene)) {
+    int bullets = 0;
+    const bool game = std::strncmp(scene_name, "game:", 5) == 0;
+    if (game ? !game_scene(scene_name, scene, bullets) : !world::builtin_scene(scene_name, params, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
@@ -43,6 +104,19 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         scene.curvature = std::atof(K);
     }
     world::World<T> wd(scene);
+    if (game) {  // in play: fire held, turning, until the bullets are all in flight
+        wd.press(world::Action::fire);
+        wd.press(world::Action::turn_left);
+        for (int i = 0; i < 60 * 2; ++i) wd.step(T(1.0 / 60));
+        // Hits split asteroids: as many as asked for, the first ones kept.
+        int kept = 0, flying = 0;
+        for (auto& b : wd.bodies) {
+            if (b.active && b.desc->kind() == world::BodyKind::asteroid && ++kept > scene.game.asteroids)
+                b.active = false, --kept;
+            flying += b.active && b.desc->kind() == world::BodyKind::bullet;
+        }
+        std::fprintf(stderr, "frame_probe: %d asteroids, %d bullets in flight\n", kept, flying);
+    }
     render::DrawScratch<T> scratch;
     scratch.prepare(wd);
     render::WorkerPool pool(threads);
@@ -68,6 +142,10 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     std::vector<std::size_t> counts;
     for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
         const auto& b = wd.bodies[i];
+        if (!render::body_shown(b, o)) {  // (a game's spare slots)
+            counts.push_back(0);
+            continue;
+        }
         std::vector<render::SubPoint> p(render::body_point_capacity(b));
         const std::size_t k =
             render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
@@ -81,7 +159,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         else if (stage == "backdrop") render::draw_backdrop(c, m, o);
         else if (stage == "geometry") {
             for (std::size_t b = 0; b < wd.bodies.size(); ++b)
-                check += render::body_screen_points(wd, wd.bodies[b], scratch.shapes[b], m, o, scratch.vertices.data(),
+                if (render::body_shown(wd.bodies[b], o))
+                    check += render::body_screen_points(wd, wd.bodies[b], scratch.shapes[b], m, o, scratch.vertices.data(),
                                                     scratch.vectors.data(), scratch.points.data());
         } else if (stage == "raster") {
             std::size_t at = 0;
@@ -91,6 +170,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
             }
         } else if (stage == "copy") render::copy_canvas(c, fb);
         else if (stage == "memcpy") std::memcpy(front.data(), back.data(), bytes);
+        else if (stage == "collide") check += static_cast<uint64_t>(collide(wd, dt));
         else {
             std::fprintf(stderr, "frame_probe: unknown stage '%s'.\n", stage.c_str());
             return 2;
@@ -105,7 +185,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
 
 int main(int argc, char** argv) {
     if (argc < 7) {
-        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy fixed|double|float SCENE WxH rgb565|xrgb8888|rgb888 N [THREADS [K [TESSELLATION [VERTICES]]]]\n");
+        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy|collide fixed|double|float SCENE|game:A:B WxH rgb565|xrgb8888|rgb888 N [THREADS [K [TESSELLATION [VERTICES]]]]\n");
         return 2;
     }
     int w = 0, h = 0;

@@ -1,5 +1,6 @@
-# `cmake --install` into a scratch prefix: the binary, every board file and the systemd unit
-# land where docs/kiosk.md says, and the unit starts the installed binary.
+# `cmake --install` into a scratch prefix: the binary, every board file, the systemd unit, the
+# manual page and the documents land where docs/kiosk.md says, and the unit starts the
+# installed binary.
 #   cmake -DBUILD=<build dir> -DPREFIX=<scratch> -DSOURCE=<source dir> -P install_layout.cmake
 file(REMOVE_RECURSE ${PREFIX})
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}
@@ -28,7 +29,8 @@ execute_process(COMMAND ${CMAKE_COMMAND} -L -N ${BUILD} OUTPUT_VARIABLE cache)
 string(REGEX MATCH "CMAKE_INSTALL_PREFIX:PATH=([^\n]*)" _ "${cache}")
 set(configured ${CMAKE_MATCH_1})
 foreach(want "ExecStart=${configured}/bin/noneuclid run --display fbdev" "Conflicts=getty@tty1.service"
-             "TTYPath=/dev/tty1" "Restart=always" "SupplementaryGroups=video input gpio" "StandardInput=tty")
+             "TTYPath=/dev/tty1" "Restart=always" "SupplementaryGroups=video input gpio" "StandardInput=tty"
+             "StateDirectory=noneuclid")
     string(FIND "${unit}" "${want}" at)
     if(at LESS 0)
         message(FATAL_ERROR "the installed unit lacks '${want}':\n${unit}")
@@ -41,4 +43,19 @@ execute_process(COMMAND ${CMAKE_COMMAND} -E env NONEUCLID_BOARDS=${PREFIX}/share
 if(NOT err MATCHES "board Raspberry Pi 4[^\n]*${PREFIX}/share/noneuclid/boards/rpi4.toml" OR NOT rc EQUAL 2)
     message(FATAL_ERROR "the installed binary did not take rpi4 from the installed boards (exit ${rc}):\n${err}")
 endif()
-message(STATUS "installed: bin/noneuclid, ${n} board files, the unit")
+# The manual page, when help2man made one; the documents. The Debian package's system files
+# (the user, the state directory, the udev rule, the board override) are not part of a plain
+# install: systemd would not read them under /usr/local.
+if(EXISTS ${BUILD}/man/noneuclid.1.gz AND NOT EXISTS ${PREFIX}/share/man/man1/noneuclid.1.gz)
+    message(FATAL_ERROR "the manual page was made but not installed to ${PREFIX}/share/man/man1")
+endif()
+if(NOT EXISTS ${PREFIX}/share/doc/noneuclid/kiosk.md)
+    message(FATAL_ERROR "the documents were not installed to ${PREFIX}/share/doc/noneuclid")
+endif()
+foreach(f lib/sysusers.d/noneuclid.conf lib/tmpfiles.d/noneuclid.conf lib/udev/rules.d/60-noneuclid-gpio.rules
+          share/doc/noneuclid/copyright)
+    if(EXISTS ${PREFIX}/${f})
+        message(FATAL_ERROR "${PREFIX}/${f} was installed: it is the Debian package's alone")
+    endif()
+endforeach()
+message(STATUS "installed: bin/noneuclid, ${n} board files, the unit, the documents")

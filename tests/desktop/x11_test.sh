@@ -7,10 +7,13 @@
 #  2. `noneuclid run` on the kiosk scene, recording (--record): thrust held for a while, a
 #     turn, K set by 3, the HUD toggled twice, then Esc; `noneuclid render --actions` of the
 #     recording equals the window's last frame, pixel for pixel; and without the thrust it
-#     differs (the comparison can fail).
-#   x11_test.sh NONEUCLID PNG_DIFF SCENE
+#     differs (the comparison can fail);
+#  3. a whole game in the window (tests/world/data/game.toml: one ship, fast asteroids): Space
+#     starts it, Space held fires while the ship turns and thrusts, until the game is over (the
+#     high-score table is written), then Esc; the replay of the recording equals the window.
+#   x11_test.sh NONEUCLID PNG_DIFF SCENE GAME_SCENE
 set -euo pipefail
-noneuclid=$1 png_diff=$2 scene=$3
+noneuclid=$1 png_diff=$2 scene=$3 game=$4
 tmp=$(mktemp -d)
 xvfb_pid=
 app_pid=
@@ -85,3 +88,31 @@ if "$png_diff" "$tmp/run.png" "$tmp/without.png" --exact; then
     echo "x11_test: the replay without the thrust should differ from the run" >&2
     exit 1
 fi
+
+# 3. A whole game: played until the table has its score (at most 40 s), then Esc.
+timeout 90 "$noneuclid" run --display x11 --scene "$game" --size 400x300 --record "$tmp/game.rec" \
+    --scores "$tmp/scores" --screenshot "$tmp/game.png" &
+app_pid=$!
+win=$(window)
+timeout 10 xdotool key --window "$win" space
+sleep 0.3
+timeout 10 xdotool keydown --window "$win" space
+for i in $(seq 1 80); do
+    [ -s "$tmp/scores" ] && break
+    timeout 10 xdotool keydown --window "$win" Left
+    [ $((i % 4)) = 0 ] && timeout 10 xdotool keydown --window "$win" Up
+    sleep 0.25
+    timeout 10 xdotool keyup --window "$win" Left Up
+    sleep 0.25
+done
+timeout 10 xdotool keyup --window "$win" space
+[ -s "$tmp/scores" ] || { echo "x11_test: the game did not end within 40 s" >&2; exit 1; }
+timeout 10 xdotool key --window "$win" Escape
+wait_app "noneuclid run (the game)"
+for want in "press fire" "release fire" "scene $game"; do
+    grep -q "$want" "$tmp/game.rec" || { echo "x11_test: the game's recording has no '$want':" >&2; cat "$tmp/game.rec" >&2; exit 1; }
+done
+"$noneuclid" scores --scores "$tmp/scores" 2>/dev/null | grep -q '^ 1 ' ||
+    { echo "x11_test: no game in the high-score table:" >&2; cat "$tmp/scores" >&2; exit 1; }
+timeout 60 "$noneuclid" render --actions "$tmp/game.rec" --out "$tmp/game-replay.png"
+"$png_diff" "$tmp/game.png" "$tmp/game-replay.png" --exact

@@ -114,6 +114,8 @@ public:
     bool wait(int64_t, app::InputSink& sink) override {
         const long f = inner_.presented();
         sink.input({world::Control::thrust, f % 40 < 20});
+        sink.input({world::Control::fire, f % 30 < 25});  // (the game: starts it, then shots)
+        sink.input({world::Control::left, f % 90 < 30});
         if (f % 50 == 0) sink.input({world::Control::projection, true}), sink.input({world::Control::projection, false});
         return true;
     }
@@ -126,9 +128,9 @@ private:
     app::MemoryDisplay inner_{320, 240, render::PixelFormat::rgb565()};
 };
 
-long loop_allocations(app::Engine engine, int threads) {
+long loop_allocations(app::Engine engine, int threads, const char* scene_name = "kiosk") {
     world::Scene scene;
-    EXPECT_TRUE(world::builtin_scene("kiosk", {}, scene));
+    EXPECT_TRUE(world::builtin_scene(scene_name, {}, scene));
     app::SessionOptions so;
     so.hud = true, so.show_fps = true, so.legend = "keys", so.threads = threads;
     so.attract = {2, 10, 0.25};  // attract mode comes and goes with the keys
@@ -150,6 +152,13 @@ long loop_allocations(app::Engine engine, int threads) {
 TEST(NoAllocation, TheFrameLoopAllocatesNothingPerFrame) {
     EXPECT_EQ(loop_allocations(app::Engine::fixed, 1), 0);
     EXPECT_EQ(loop_allocations(app::Engine::double_, 2), 0);
+}
+
+// The game: shots, hits, splits (new outlines in the asteroids' slots), crashes and attract
+// mode's play, without an allocation.
+TEST(NoAllocation, TheGameAllocatesNothingPerFrame) {
+    EXPECT_EQ(loop_allocations(app::Engine::fixed, 1, "asteroids"), 0);
+    EXPECT_EQ(loop_allocations(app::Engine::double_, 2, "asteroids"), 0);
 }
 
 }  // namespace

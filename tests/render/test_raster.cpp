@@ -21,7 +21,9 @@ using namespace noneuclid::render;
 namespace {
 
 const PixelFormat kFormats[] = {PixelFormat::rgb565(), PixelFormat::bgr565(), PixelFormat::xrgb8888(),
-                                PixelFormat::xbgr8888(), PixelFormat::rgb888(), PixelFormat::bgr888()};
+                                PixelFormat::xbgr8888(), PixelFormat::rgb888(), PixelFormat::bgr888(),
+                                PixelFormat::rgba8888()};
+constexpr std::size_t kFormatCount = sizeof(kFormats) / sizeof(kFormats[0]);
 
 // A buffer with a canary border: `pad` canary rows above and below, `pad` canary pixels left
 // and right of each row, and an odd number of spare bytes at the end of each row (stride).
@@ -52,11 +54,13 @@ struct Guarded {
     }
 };
 
+// The pixels that are not black.
 std::set<std::pair<int, int>> lit(const Canvas& c) {
     std::set<std::pair<int, int>> s;
+    const uint32_t black = c.format().pack({0, 0, 0});
     for (int y = 0; y < c.height(); ++y)
         for (int x = 0; x < c.width(); ++x)
-            if (c.get_word(x, y) != 0) s.insert({x, y});
+            if (c.get_word(x, y) != black) s.insert({x, y});
     return s;
 }
 
@@ -222,6 +226,46 @@ TEST(Raster, PixelFormatsRoundTrip) {
     Canvas(px, 1, 1, 2, PixelFormat::rgb565()).set(0, 0, {0xFF, 0, 0});
     EXPECT_EQ(px[1], 0xF8);
     EXPECT_EQ(px[0], 0x00);
+    // A browser's ImageData: R, G, B, then an alpha byte always 255 (opaque).
+    Canvas(px, 1, 1, 4, PixelFormat::rgba8888()).set(0, 0, {0x11, 0x22, 0x33});
+    EXPECT_EQ(px[0], 0x11);
+    EXPECT_EQ(px[1], 0x22);
+    EXPECT_EQ(px[2], 0x33);
+    EXPECT_EQ(px[3], 0xFF);
+}
+
+// The web page draws in rgba8888 and must show what `render` writes from xrgb8888: after the
+// same drawing (anti-aliased and wide lines crossing each other, the shaded outside), the
+// 32-bit formats of byte channels hold the same colour in every pixel, and rgba8888's alpha
+// is 255 in every pixel.
+TEST(Raster, ByteChannelFormatsHoldTheSameColours) {
+    const PixelFormat formats[] = {PixelFormat::xrgb8888(), PixelFormat::xbgr8888(), PixelFormat::rgba8888()};
+    const int W = 97, H = 61;
+    std::vector<std::vector<uint8_t>> pixels;
+    for (const PixelFormat& f : formats) {
+        ASSERT_TRUE(f.byte_channels()) << f.name;
+        std::vector<uint8_t>& px = pixels.emplace_back(static_cast<std::size_t>(W * H * 4));
+        const Canvas c(px.data(), W, H, W * 4, f);
+        c.clear({20, 30, 40});
+        std::mt19937 rng(25);
+        std::uniform_real_distribution<double> x(-10, W + 10), y(-10, H + 10);
+        std::uniform_int_distribution<int> level(0, 255);
+        for (int k = 0; k < 400; ++k) {
+            const Rgb col{static_cast<uint8_t>(level(rng)), static_cast<uint8_t>(level(rng)), static_cast<uint8_t>(level(rng))};
+            const LineStyle style{k % 3 != 0, k % 4 == 0 ? 700 : 256};
+            const SubPoint a = to_sub(x(rng), y(rng)), b = to_sub(x(rng), y(rng));
+            draw_line(c, a, b, col, style);
+        }
+        shade_outside_circle(c, W / 2.0, H / 2.0, 25, {200, 100, 50}, 90);
+        for (int py = 0; py < H; ++py)
+            for (int px_ = 0; px_ < W; ++px_) {
+                ASSERT_EQ(c.get(px_, py), Canvas(pixels[0].data(), W, H, W * 4, formats[0]).get(px_, py))
+                    << f.name << " at " << px_ << "," << py;
+                if (f.opaque.length) {
+                    ASSERT_EQ(px[static_cast<std::size_t>((py * W + px_) * 4 + 3)], 255) << f.name;
+                }
+            }
+    }
 }
 
 TEST(Raster, BlendingIsCorrectInEveryFormat) {
@@ -367,7 +411,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
             ASSERT_EQ(key(part), key(want)) << "pattern " << k << " rows " << y0 << ".." << y1;
         }
         // The same on a canvas over a noisy background (blends depend on it), every format.
-        const PixelFormat f = kFormats[k % 6];
+        const PixelFormat f = kFormats[static_cast<std::size_t>(k) % kFormatCount];
         Guarded a(W, H, f), b(W, H, f);
         const Canvas ca = a.canvas(), cb = b.canvas();
         for (int y = 0; y < H; ++y)
@@ -395,7 +439,8 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
                 draw_line(d.canvas(), pat.pts[0], pat.pts[1], col, st, end, {y0, y1});
                 for (int y = 0; y < H; ++y)
                     for (int x = 0; x < W; ++x)
-                        ASSERT_EQ(d.canvas().get_word(x, y), y >= y0 && y < y1 ? c.canvas().get_word(x, y) : 0u) << "line " << k;
+                        ASSERT_EQ(d.canvas().get_word(x, y), y >= y0 && y < y1 ? c.canvas().get_word(x, y) : f.pack({0, 0, 0}))
+                            << "line " << k;
             }
         }
     }
@@ -410,7 +455,7 @@ TEST(Raster, RowBandsTiledMakeTheSamePicture) {
     const int W = 131, H = 83;
     std::uniform_int_distribution<int> cut(1, 20), noise(0, 255);
     for (int k = 0; k < 300; ++k) {
-        const PixelFormat f = kFormats[k % 6];
+        const PixelFormat f = kFormats[static_cast<std::size_t>(k) % kFormatCount];
         std::vector<Pattern> pats;
         std::vector<Rgb> cols;
         for (int i = 0; i < 25; ++i) {

@@ -1,7 +1,7 @@
 // fb_compare: a framebuffer read back from the system test's VM against a PNG from
 // `noneuclid render` (tests/system/run).
 //
-//   fb_compare DUMP.raw DUMP.info REFERENCE.png [--tolerance PIXELS] [--diff OUT.png]
+//   fb_compare DUMP.raw DUMP.info REFERENCE.png [--tolerance PIXELS] [--diff OUT.png] [--count RRGGBB]
 //
 // DUMP.raw holds the framebuffer's visible rows, line_length bytes apart (guest-lib.sh's
 // fb_dump); DUMP.info is the guest's `probe fb` line: xres, yres, xoffset, bpp, line_length and
@@ -12,7 +12,8 @@
 //
 // Prints how many pixels differ and the largest channel difference. Exit 0 when at most
 // PIXELS pixels differ (default 0), 1 when more do, 2 on bad input. --diff writes the pixels
-// that differ in white over a dimmed reference.
+// that differ in white over a dimmed reference. --count prints how many of the framebuffer's
+// pixels are exactly that colour (as the device's format stores it): the game's bullets, say.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -71,11 +72,12 @@ r::Channel channel(const std::map<std::string, std::string>& m, const std::strin
 int main(int argc, char** argv) {
     std::vector<std::string> files;
     long tolerance = 0;
-    std::string diff_path;
+    std::string diff_path, count;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--tolerance" && i + 1 < argc) tolerance = std::strtol(argv[++i], nullptr, 10);
         else if (a == "--diff" && i + 1 < argc) diff_path = argv[++i];
+        else if (a == "--count" && i + 1 < argc) count = argv[++i];
         else files.push_back(a);
     }
     if (files.size() != 3) fail("usage: fb_compare DUMP.raw DUMP.info REFERENCE.png [--tolerance PIXELS] [--diff OUT.png]");
@@ -125,6 +127,14 @@ int main(int argc, char** argv) {
     }
     std::printf("%s: %ld of %ld pixels differ from %s (largest channel difference %d; tolerance %ld pixels)\n",
                 files[0].c_str(), differing, width * height, files[2].c_str(), worst, tolerance);
+    if (!count.empty()) {
+        const unsigned long c = std::strtoul(count.c_str(), nullptr, 16);
+        const uint32_t word = format.pack({static_cast<uint8_t>(c >> 16), static_cast<uint8_t>(c >> 8), static_cast<uint8_t>(c)});
+        long n = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) n += fb.get_word(x, y) == word;
+        std::printf("%s: %ld pixels of #%s\n", files[0].c_str(), n, count.c_str());
+    }
     if (!diff_path.empty()) {
         // rgb888's word is 0xRRGGBB little-endian, so its bytes in memory are B, G, R.
         std::vector<uint8_t> bgr(diff.size());

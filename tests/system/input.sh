@@ -3,17 +3,17 @@
 # /t/params.sh sets BINARIES (static noneuclid builds in /t, e.g. "noneuclid-gpiod1
 # noneuclid-gpiod2": the libgpiod v1 and v2 backends); /t/board.toml is the VM's board
 # (tests/system/board.toml: chip "noneuclid-sim", thrust on line 0, left 1, right 2,
-# curvature_up 3, reset 6; 5 ms debounce).
+# curvature_up 3, reset 6, fire 8; 5 ms debounce).
 #
 # For each binary, on the gpio-sim chip:
-#   describe   the start-up line names the chip, 7 buttons, the libgpiod API and the debounce
+#   describe   the start-up line names the chip, 9 buttons, the libgpiod API and the debounce
 #   sequence   presses and releases of two buttons, in order
 #   held       (gpio-sim cannot hold a line against the request's pull-up: informational)
 #   debounce   with a 200 ms debounce, five fast edges then a hold give one press (and with 0 ms
 #              the same bounce reaches the program as several, so the bounce was real)
 #   busy       a second program asking for held lines fails with the busy-line sentence
 #   no chip    a board naming a chip that is not there: the sentence lists what is
-#   no line    a line beyond the chip's 8: the sentence gives the range
+#   no line    a line beyond the chip's 9: the sentence gives the range
 #   alloc      read() allocates nothing while lines change (input_alloc_probe, malloc wrapped)
 # Once (the evdev code is the same in every binary), through a uinput key device:
 #   evdev      a key held at start (a press first), press/release, an autorepeat (ignored), release; grabbed
@@ -24,7 +24,7 @@
 BOARD=/t/board.toml
 NBUTTONS=$(grep -c '^gpio = ' "$BOARD")
 
-check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 8
+check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 9
 echo "gpio-sim: $SIM_DEV"
 
 # listen NAME BINARY ARGS...: `BINARY buttons ARGS` in the background (stdout /out/NAME.txt,
@@ -145,7 +145,7 @@ release curvature_up" ]
     "$bin" buttons --board /tmp/board-noline.toml --input gpio --timeout 2 > /dev/null 2> "/out/$bin-noline.log"
     check "$bin no line: exit 2" [ "$?" = 2 ]
     check "$bin no line: the sentence" contains "$(cat "/out/$bin-noline.log")" \
-        "GPIO line 20 (reset" "does not exist on noneuclid-sim ($SIM_DEV), which has 8 lines (0 to 7)"
+        "GPIO line 20 (reset" "does not exist on noneuclid-sim ($SIM_DEV), which has 9 lines (0 to 8)"
 done
 
 # permission: a user outside the gpio group (devtmpfs makes the chip root's, mode 0600)

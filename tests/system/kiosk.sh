@@ -12,6 +12,9 @@
 #             (/out/<case>.raw + .info) go to the host, which renders and compares;
 #   busy      a second noneuclid asking for the lines the first one holds fails with the
 #             busy-line sentence; the first one, stopped by SIGTERM, restores the VT.
+# Once, on bochs: the game: fire starts a game, then held fires shots; quit while the bullets
+# are in flight; the recording and the framebuffer go to the host, which renders and compares,
+# and counts the bullets' colour on the framebuffer.
 # Once: `--frames 30` with no input stops after exactly 30 frames (stdin not a VT), the same
 # on vfb reloaded at 24 bpp, and a missing framebuffer (/dev/fb7) fails with its sentence.
 #
@@ -22,7 +25,7 @@
 
 . /t/params.sh
 TTY=/dev/tty1
-THRUST=0 CURVATURE_DOWN=4 QUIT=7
+THRUST=0 CURVATURE_DOWN=4 QUIT=7 FIRE=8
 EXPECTED_SEQUENCE="press thrust
 press curvature_down
 release curvature_down
@@ -34,8 +37,20 @@ vfb=$(fb_by_name "Virtual FB") || vfb=""
 check "bochs framebuffer present" [ -n "$bochs" ]
 check "cirrus framebuffer present (RGB565, red at bit 11, as on a Pi 0-3)" [ -n "$cirrus" ]
 check "vfb framebuffer present" [ -n "$vfb" ]
-check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 8
+check "gpio-sim chip noneuclid-sim live" sim_chip noneuclid-sim 9
 check "fbcon is off the framebuffers (fbcon=map:7)" [ "$(cat /sys/class/vtconsole/vtcon1/name 2>/dev/null)" = "(M) dummy device" ]
+
+# quit_run NAME: presses and releases quit, waits for the run in $_pid and checks it ended well
+# (its log, $_out.log, shown).
+quit_run() {
+    sim_pull "$QUIT" pull-down
+    sleep 0.1
+    sim_pull "$QUIT" pull-up
+    wait "$_pid"
+    _rc=$?
+    cat "$_out.log"
+    check "$1: exit 0" [ "$_rc" = 0 ]
+}
 
 # The last line of a log: the error sentence.
 last_line() { tail -n 1 "$1"; }
@@ -86,13 +101,7 @@ kiosk_case() {  # NAME BINARY FRAMEBUFFER
     sleep 0.3
     sim_pull "$THRUST" pull-up
     sleep 0.3
-    sim_pull "$QUIT" pull-down
-    sleep 0.1
-    sim_pull "$QUIT" pull-up
-    wait "$_pid"
-    _rc=$?
-    cat "$_out.log"
-    check "$1: exit 0" [ "$_rc" = 0 ]
+    quit_run "$1"
     check "$1: VT back in text mode" [ "$(probe kdmode "$TTY")" = text ]
     echo "recorded:"
     cat "$_out.rec"
@@ -103,6 +112,28 @@ kiosk_case() {  # NAME BINARY FRAMEBUFFER
     check "$1: the recording ends with that frame count" [ "$(sed -n 's/^frames //p' "$_out.rec")" = "$(cat "$_out.frames")" ]
     fb_dump "$3" "$_out"
     check "$1: framebuffer read back" [ -s "$_out.raw" ]
+}
+
+game_case() {  # BINARY FRAMEBUFFER
+    _out=/out/game
+    "$1" run --display "fbdev:$2" --input gpio --board /t/board.toml --scene asteroids --no-aa --frames 100000 \
+        --scores /out/game-scores --record "$_out.rec" --stats < "$TTY" > "$_out.log" 2>&1 &
+    _pid=$!
+    wait_for "$_out.log" "console in graphics mode" "$_pid" || check "game: started on the VT" false
+    sleep 0.3
+    sim_pull "$FIRE" pull-down    # the "press fire" screen: a game begins
+    sleep 0.2
+    sim_pull "$FIRE" pull-up
+    sleep 0.8
+    sim_pull "$FIRE" pull-down    # held: a shot every 0.2 s
+    sleep 0.7
+    quit_run game
+    cat "$_out.rec"
+    check "game: fire pressed twice, released once" \
+        [ "$(grep -E '^[0-9]' "$_out.rec" | cut -d' ' -f2- | tr '\n' ,)" = "press fire,release fire,press fire," ]
+    sed -n 's/^noneuclid: \([0-9]*\) frames in .*/\1/p' "$_out.log" > "$_out.frames"
+    check "game: the recording ends with the frame count" [ "$(sed -n 's/^frames //p' "$_out.rec")" = "$(cat "$_out.frames")" ]
+    fb_dump "$2" "$_out"
 }
 
 busy_case() {  # BINARY
@@ -135,6 +166,9 @@ for bin in $BINARIES; do
     [ -n "$vfb" ] && [ -n "$bochs" ] && busy_case "$bin"
     [ -z "$first" ] && first=$bin
 done
+
+echo "== $first: the game on bochs"
+[ -n "$bochs" ] && game_case "$first" "$bochs"
 
 echo "== $first: --frames 30, no input, stdin not a VT"
 "$first" run --display "fbdev:$bochs" --input none --board /t/board.toml --scene kiosk --frames 30 --no-hud \

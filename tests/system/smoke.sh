@@ -1,6 +1,6 @@
 # Guest script of `tests/system/run smoke`: the harness itself, with busybox alone.
 # The bochs framebuffer is XRGB8888 800x480, vfb is RGB565 800x480, a gpio-sim bank
-# "noneuclid-sim" of 8 lines goes live and its pulls move the line values.
+# "noneuclid-sim" of 9 lines goes live and its pulls move the line values.
 
 bochs=$(fb_by_name bochs-drmdrmfb) || bochs=""
 vfb=$(fb_by_name "Virtual FB") || vfb=""
@@ -24,7 +24,7 @@ if [ -n "$vfb" ]; then
     check "vfb 16 bpp, red at 0 (what vfb gives)" contains "$info" " bpp=16 " " red=0/5 green=5/6 blue=11/5 "
 fi
 
-check "gpio-sim chip live" sim_chip noneuclid-sim 8
+check "gpio-sim chip live" sim_chip noneuclid-sim 9
 echo "gpio-sim: $SIM_DEV, lines in $SIM_DIR"
 check "gpiochip device node" [ -c "$SIM_DEV" ]
 check "line 4 high when pulled up" [ "$(sim_value 4)" = 1 ]

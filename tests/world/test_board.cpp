@@ -2,6 +2,7 @@
 // its comments say, models select one board each, and bad files get file:line:column and the fix.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ Board load(const std::string& name) {
     return b;
 }
 
-TEST(Boards, EveryPiBoardWiresTheSevenButtonsToMatchingHeaderPins) {
+TEST(Boards, EveryPiBoardWiresTheEightButtonsToMatchingHeaderPins) {
     const std::map<std::string, std::string> chip = {{"rpi-zero2w", "pinctrl-bcm2835"}, {"rpi3", "pinctrl-bcm2835"},
                                                      {"rpi4", "pinctrl-bcm2711"}, {"rpi5", "pinctrl-rp1"}};
     for (const auto& [name, label] : chip) {
@@ -49,9 +50,10 @@ TEST(Boards, EveryPiBoardWiresTheSevenButtonsToMatchingHeaderPins) {
             // Not a pin the usual display/audio HATs or the I2C/SPI/UART defaults take.
             EXPECT_TRUE(bb.gpio != 2 && bb.gpio != 3 && bb.gpio != 14 && bb.gpio != 15) << bb.gpio;
         }
-        EXPECT_EQ(gpio_buttons, 7);
+        EXPECT_EQ(gpio_buttons, 8);
+        EXPECT_EQ(b.scene, "asteroids");  // the kiosk plays the game
         for (Control c : {Control::thrust, Control::left, Control::right, Control::curvature_up, Control::curvature_down,
-                          Control::preset, Control::reset}) {
+                          Control::preset, Control::reset, Control::fire}) {
             bool found = false;
             for (const auto& bb : b.buttons) found = found || (bb.control == c && bb.gpio >= 0 && bb.key > 0);
             EXPECT_TRUE(found) << world::control_name(c);
@@ -120,6 +122,90 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
     BoardError e;
     EXPECT_FALSE(world::load_board_file("/nonexistent/board.toml", b, e));
     EXPECT_NE(e.to_string().find("the board file: cannot read it"), std::string::npos) << e.to_string();
+}
+
+// ---- the board override (/etc/noneuclid/board.toml) ----------------------------------------
+
+std::string write_file(const std::string& name, const std::string& text) {
+    const std::string path = testing::TempDir() + name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+// Every field of a board, as text, so that two boards compare in one assertion.
+std::string fields(const Board& b) {
+    std::string s = b.name + "|" + b.file + "|" + b.device + "|" + std::to_string(b.fps) + "|" + b.scene + "|" + b.engine +
+                    "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" +
+                    std::to_string(b.threads) + "|" + std::to_string(b.debounce_ms) + "|" + b.evdev_device + "|" +
+                    std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds);
+    for (const std::string& m : b.models) s += "|model " + m;
+    for (const std::string& c : b.chips) s += "|chip " + c;
+    for (const auto& bb : b.buttons)
+        s += "|" + std::string(world::control_name(bb.control)) + " " + std::to_string(bb.gpio) + " " +
+             std::to_string(bb.pin) + " " + std::to_string(bb.key);
+    return s;
+}
+
+TEST(BoardOverride, TheShippedFileChangesNothingOnAnyBoard) {
+    // The Debian package's /etc/noneuclid/board.toml: every setting commented out.
+    const std::string shipped = std::string(NONEUCLID_SOURCE_DIR) + "/platform/debian/package/board-override.toml";
+    for (const char* name : {"rpi-zero2w", "rpi3", "rpi4", "rpi5", "generic"}) {
+        SCOPED_TRACE(name);
+        const Board before = load(name);
+        Board b = before;
+        BoardError e;
+        ASSERT_TRUE(world::overlay_board_file(shipped, b, e)) << e.to_string();
+        EXPECT_EQ(fields(b), fields(before));
+    }
+}
+
+TEST(BoardOverride, KeysItSetsReplaceTheBoardsAndTheRestStays) {
+    const std::string path = write_file("override_keys.toml",
+                                        "[display]\nthreads = 3\nantialias = false\n[attract]\nidle_seconds = 300\n");
+    Board b = load("rpi4");
+    const Board before = b;
+    BoardError e;
+    ASSERT_TRUE(world::overlay_board_file(path, b, e)) << e.to_string();
+    EXPECT_EQ(b.threads, 3);
+    EXPECT_FALSE(b.antialias);
+    EXPECT_EQ(b.idle_seconds, 300);
+    // Everything else as rpi4.toml has it: set those three back and the boards are the same.
+    b.threads = before.threads, b.antialias = before.antialias, b.idle_seconds = before.idle_seconds;
+    EXPECT_NE(before.threads, 3);
+    EXPECT_TRUE(before.antialias);
+    EXPECT_EQ(fields(b), fields(before));
+}
+
+TEST(BoardOverride, ItsButtonsReplaceAllOfTheBoards) {
+    const std::string path = write_file("override_buttons.toml",
+                                        "[gpio]\nchip = [\"/dev/gpiochip1\"]\n"
+                                        "[[button]]\naction = \"thrust\"\ngpio = 6\npin = 31\n"
+                                        "[[button]]\naction = \"reset\"\ngpio = 17\n");
+    Board b = load("rpi4");
+    BoardError e;
+    ASSERT_TRUE(world::overlay_board_file(path, b, e)) << e.to_string();
+    ASSERT_EQ(b.buttons.size(), 2u);
+    EXPECT_EQ(b.buttons[0].control, Control::thrust);
+    EXPECT_EQ(b.buttons[0].gpio, 6);
+    EXPECT_EQ(b.buttons[0].key, -1);
+    EXPECT_EQ(b.buttons[1].control, Control::reset);
+    EXPECT_EQ(b.buttons[1].gpio, 17);  // rpi4's thrust line: no clash, the board's buttons are gone
+    EXPECT_EQ(b.chips, std::vector<std::string>{"/dev/gpiochip1"});
+    EXPECT_EQ(b.models, load("rpi4").models);
+    EXPECT_EQ(b.file, load("rpi4").file);
+}
+
+TEST(BoardOverride, ABadFileIsNamedAndLeavesTheBoardAlone) {
+    const std::string path = write_file("override_bad.toml", "[attract]\nidle_seconds = 60\n[display]\nfps = 0\n");
+    Board b = load("rpi3");
+    const Board before = b;
+    BoardError e;
+    ASSERT_FALSE(world::overlay_board_file(path, b, e));
+    EXPECT_NE(e.to_string().find("override_bad.toml:4:7: display: 'fps' must be from 1 to 1000"), std::string::npos)
+        << e.to_string();
+    EXPECT_EQ(fields(b), fields(before));
+    ASSERT_FALSE(world::overlay_board_file(testing::TempDir(), b, e));
+    EXPECT_NE(e.to_string().find("the board override: it is a directory"), std::string::npos) << e.to_string();
 }
 
 }  // namespace

@@ -266,7 +266,8 @@ TEST(Actions, HyperbolicFlatSphericalSetKOnThePress) {
     EXPECT_EQ(w.K, 0.0);
     for (Action a : {Action::spherical, Action::hyperbolic, Action::flat, Action::next_preset, Action::reset})
         EXPECT_TRUE(acts_on_press(a)) << action_name(a);
-    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down})
+    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down,
+                     Action::fire})
         EXPECT_FALSE(acts_on_press(a)) << action_name(a);
 }
 
@@ -443,7 +444,9 @@ TEST(Dump, EdgesListTheirPointsEndsIncludedAndScreenMirrorsThem) {
     std::string out;
     dump_frame(w, {200, 100, noneuclid::geo::Projection::azimuthal_equidistant}, out);
     // 3 closed edges of 5 points; screen: R = pi fills 50 px (half the smaller side)
-    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"center\":[1,0],\"facing\":90,", 0), 0u) << out;
+    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"kind\":\"body\",\"center\":[1,0],\"facing\":90,", 0),
+              0u)
+        << out;
     EXPECT_NE(out.find("\"travel\":[0,0]"), std::string::npos);
     const std::size_t edges = out.find("\"edges\":["), screen = out.find("\"screen\":[");
     ASSERT_NE(edges, std::string::npos);

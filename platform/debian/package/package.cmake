@@ -1,0 +1,109 @@
+# The Debian package (included from platform/CMakeLists.txt). `cpack -G DEB` in a build directory
+# packs what `cmake --install` installs (the program, the board files, the unit, the manual page,
+# the documents) with what only a system package does: the user noneuclid, the state directory,
+# the board override as a conffile, GPIO chips for the group gpio, and the maintainer scripts.
+# platform/debian/build-packages makes the three packages (amd64, arm64, armhf) from the presets
+# of the same names, which install under /usr: the paths compiled into the program and the unit
+# are the package's.
+#
+# Depends come from the binary (dpkg-shlibdeps: libc, libstdc++, and libgpiod, libpng, zlib and
+# X11 where linked shared, as in the amd64 build; the cross builds link libgpiod statically and
+# have no PNG, zlib or X11), plus systemd, whose sysusers and tmpfiles the postinst runs.
+
+# Debian's name for the architecture built for.
+set(noneuclid_deb_arch_aarch64 arm64)
+set(noneuclid_deb_arch_arm armhf)
+set(noneuclid_deb_arch_x86_64 amd64)
+if(CMAKE_CROSSCOMPILING)
+    set(NONEUCLID_DEB_ARCH "${noneuclid_deb_arch_${CMAKE_SYSTEM_PROCESSOR}}")
+else()
+    execute_process(COMMAND dpkg --print-architecture OUTPUT_VARIABLE NONEUCLID_DEB_ARCH
+                    OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+endif()
+if(NOT NONEUCLID_DEB_ARCH)
+    return()  # not a Debian architecture (or not a Debian machine): no package
+endif()
+
+set(noneuclid_pkg ${CMAKE_CURRENT_LIST_DIR})
+set(noneuclid_pkg_out ${PROJECT_BINARY_DIR}/package)
+
+# The system files, in the package only (component deb, not part of a plain `cmake --install`):
+# systemd reads them from /usr/lib only, and a build installed under /usr/local makes its user by
+# hand (docs/kiosk.md).
+install(FILES ${noneuclid_pkg}/noneuclid.sysusers DESTINATION lib/sysusers.d RENAME noneuclid.conf
+        COMPONENT deb EXCLUDE_FROM_ALL)
+install(FILES ${noneuclid_pkg}/noneuclid.tmpfiles DESTINATION lib/tmpfiles.d RENAME noneuclid.conf
+        COMPONENT deb EXCLUDE_FROM_ALL)
+install(FILES ${noneuclid_pkg}/60-noneuclid-gpio.rules DESTINATION lib/udev/rules.d COMPONENT deb EXCLUDE_FROM_ALL)
+install(FILES ${noneuclid_pkg}/board-override.toml DESTINATION ${CMAKE_INSTALL_FULL_SYSCONFDIR}/noneuclid
+        RENAME board.toml COMPONENT deb EXCLUDE_FROM_ALL)
+
+# /usr/share/doc/noneuclid/copyright and changelog.gz (a native package's changelog: one entry,
+# this version, dated like the manual page).
+if(NOT NONEUCLID_SOURCE_DATE_EPOCH)
+    string(TIMESTAMP NONEUCLID_SOURCE_DATE_EPOCH "%s" UTC)
+endif()
+execute_process(COMMAND date -u -R -d @${NONEUCLID_SOURCE_DATE_EPOCH} OUTPUT_VARIABLE NONEUCLID_DEB_DATE
+                OUTPUT_STRIP_TRAILING_WHITESPACE)
+execute_process(COMMAND git -C ${PROJECT_SOURCE_DIR} rev-parse --short HEAD OUTPUT_VARIABLE NONEUCLID_GIT_COMMIT
+                OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
+if(NOT NONEUCLID_GIT_COMMIT)
+    set(NONEUCLID_GIT_COMMIT "a source tree outside git")
+endif()
+set(NONEUCLID_DEB_MAINTAINER "noneuclid maintainers <maintainers@users.noreply.h-seed-35e1c005.example>"
+    CACHE STRING "The Debian package's Maintainer field")
+configure_file(${noneuclid_pkg}/changelog.in ${noneuclid_pkg_out}/changelog @ONLY)
+add_custom_command(OUTPUT ${noneuclid_pkg_out}/changelog.gz
+    COMMAND gzip -9nkf ${noneuclid_pkg_out}/changelog
+    DEPENDS ${noneuclid_pkg_out}/changelog VERBATIM)
+add_custom_target(noneuclid_deb_changelog ALL DEPENDS ${noneuclid_pkg_out}/changelog.gz)
+install(FILES ${noneuclid_pkg}/copyright ${noneuclid_pkg_out}/changelog.gz DESTINATION ${CMAKE_INSTALL_DOCDIR}
+        COMPONENT deb EXCLUDE_FROM_ALL)
+
+# The maintainer scripts and the conffile list, with the unit's and files' names filled in.
+foreach(script postinst prerm postrm)
+    configure_file(${noneuclid_pkg}/${script} ${noneuclid_pkg_out}/control/${script} @ONLY
+                   FILE_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+endforeach()
+file(WRITE ${noneuclid_pkg_out}/control/conffiles "${CMAKE_INSTALL_FULL_SYSCONFDIR}/noneuclid/board.toml\n")
+
+# One package of both components: the default one (what `cmake --install` installs) and deb.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME noneuclid)
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGE_DIRECTORY ${noneuclid_pkg_out})
+set(CPACK_PACKAGING_INSTALL_PREFIX ${CMAKE_INSTALL_PREFIX})
+set(CPACK_SET_DESTDIR ON)  # the files under /etc keep their absolute path
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_GROUPING ALL_COMPONENTS_IN_ONE)
+set(CPACK_COMPONENTS_ALL Unspecified deb)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_NAME noneuclid)
+set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${NONEUCLID_DEB_ARCH})
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${NONEUCLID_DEB_MAINTAINER}")
+set(CPACK_DEBIAN_PACKAGE_SECTION education)
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS systemd)
+set(CPACK_DEBIAN_COMPRESSION_TYPE xz)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
+set(CPACK_DEBIAN_PACKAGE_CONTROL_EXTRA
+    ${noneuclid_pkg_out}/control/postinst ${noneuclid_pkg_out}/control/prerm
+    ${noneuclid_pkg_out}/control/postrm ${noneuclid_pkg_out}/control/conffiles)
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "curved space in real time, for a Raspberry Pi kiosk")
+set(CPACK_DEBIAN_PACKAGE_DESCRIPTION "Bodies fly through a two-dimensional world of constant curvature K, from -1
+(hyperbolic) through 0 (flat) to +1 (spherical), and K can be turned while
+everything moves. The program draws into the Linux framebuffer and reads
+arcade buttons through libgpiod or key events; it also runs in an X11 window
+(where linked) and renders PNG pictures.
+.
+The package installs the program, the board files of the Raspberry Pi 3, 4, 5
+and Zero 2 W, a board override in /etc/noneuclid/board.toml, and a systemd
+unit that runs the kiosk on the first console as the user noneuclid (made at
+install). The unit is not enabled: sudo systemctl enable --now noneuclid.")
+# dpkg-shlibdeps looks for a cross build's libraries in the target's multiarch directories
+# (Debian's foreign-architecture packages, e.g. libpng-dev:arm64), as a native build's in its own.
+set(CPACK_PROJECT_CONFIG_FILE ${noneuclid_pkg_out}/cpack-env.cmake)
+file(WRITE ${CPACK_PROJECT_CONFIG_FILE} "set(ENV{DEB_HOST_ARCH} ${NONEUCLID_DEB_ARCH})\n")
+include(CPack)

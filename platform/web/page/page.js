@@ -1,0 +1,329 @@
+// The page around the engine (platform/web/page_api.cpp): it hands the URL's options to the
+// engine as command-line words, drives the frame loop from requestAnimationFrame, puts each
+// frame on the <canvas>, and turns keys, touch buttons and the page's controls into the
+// engine's controls, every one of which the engine records. window.noneuclid is for tests and
+// for pages that embed this one.
+'use strict';
+(() => {
+  const $ = (id) => document.getElementById(id);
+  const canvas = $('screen');
+  const context = canvas.getContext('2d');
+  const params = new URLSearchParams(location.search);
+  const FLAGS = new Set(['aa', 'hud', 'stats']);  // `aa`, `aa=on` or `aa=off`
+  const TOUCH = [['thrust', '▲ thrust'], ['left', '◀ left'], ['right', 'right ▶'], ['curvature_down', 'K −'],
+                 ['curvature_up', 'K +'], ['preset', 'preset K'], ['fire', 'fire']];
+
+  let mod = null;           // the engine (createNoneuclid)
+  let generation = 0;       // the run the animation frames belong to
+  let running = false;
+  let image = null;         // an ImageData over the engine's pixels, while they stay put
+  let startWords = [];      // the first run's words (the URL's); "start again" uses the last run's
+  let lastWords = [];
+  let builtins = [];
+  let presentMs = 0;        // time spent in putImageData, for bench()
+  const tickMs = [];        // the last frames' times, for the status line
+  const keysHeld = new Map();  // KeyboardEvent.key -> control, while down
+  const waiting = [];       // stop() and ended() callers, told when the run ends
+  let control = {};         // control name -> number
+  let kTarget = null, kHeld = -1;  // the K slider: the K it steers to, the control held for it
+
+  // ---- the engine's display: frames in, pixels out ------------------------------------------
+  function present(pointer, width, height) {
+    const t0 = performance.now();
+    const buffer = mod.HEAPU8.buffer;  // a new one when the memory grows
+    if (!image || image.buffer !== buffer || image.pointer !== pointer || image.data.width !== width ||
+        image.data.height !== height) {
+      const bytes = new Uint8ClampedArray(buffer, pointer, width * height * 4);
+      image = {buffer, pointer, data: new ImageData(bytes, width, height)};
+    }
+    context.putImageData(image.data, 0, 0);
+    presentMs += performance.now() - t0;
+  }
+  function readBack(pointer, width, height) {
+    const data = context.getImageData(0, 0, width, height).data;
+    mod.HEAPU8.set(data, pointer);
+    return true;
+  }
+
+  // ---- runs ---------------------------------------------------------------------------------
+  function say(text) {
+    const box = $('message');
+    box.textContent = text;
+    box.hidden = !text;
+    if (text) console.warn('noneuclid: ' + text);
+  }
+  const call = (name, type, args) => mod.ccall(name, type, args.map((a) => typeof a === 'string' ? 'string' : 'number'), args);
+
+  // A file the URL names, fetched from the page's server into the engine's file system; `missing`
+  // says what a 404 means.
+  async function put(url, missing) {
+    const response = await fetch(url);
+    if (response.status === 404 && missing) throw new Error(missing);
+    if (!response.ok) throw new Error(`cannot load ${url}: the server answered ${response.status} ${response.statusText}.`);
+    const path = '/' + (url.split('/').pop().split('?')[0].replace(/[^\w.-]/g, '_') || 'file');
+    mod.FS.writeFile(path, new Uint8Array(await response.arrayBuffer()));
+    return path;
+  }
+  async function wordsOfUrl() {
+    const words = [];
+    for (const [key, value] of params) {
+      if (key === 'scene' && !builtins.includes(value)) {
+        words.push('--scene', await put(value, `no built-in scene '${value}' and no file ${value} beside the page: ` +
+                                        `the built-in scenes are ${builtins.join(', ')}.`));
+      } else if (key === 'actions') {
+        words.push('--actions', await put(value, `no actions file ${value} beside the page: put it there, or give its address.`));
+      } else if (FLAGS.has(key)) {
+        words.push(value === 'off' ? '--no-' + key : '--' + key);
+      } else {
+        words.push('--' + key, value);
+      }
+    }
+    return words;
+  }
+  // The URL's words without what the page's controls choose, for a run they start.
+  function wordsWith(scene, engine) {
+    const words = [];
+    for (let i = 0; i < startWords.length; ++i) {
+      const w = startWords[i];
+      if (['--scene', '--engine', '--actions', '--frames'].includes(w)) ++i;
+      else words.push(w);
+    }
+    return words.concat('--scene', scene, '--engine', engine);
+  }
+
+  function start(words) {
+    ++generation;
+    running = false;
+    kTarget = null, kHeld = -1;
+    keysHeld.clear();
+    for (const b of document.querySelectorAll('#touch button')) b.classList.remove('held');
+    $('download').hidden = true;
+    if (call('nw_start', 'number', [words.join('\n')]) !== 0) {
+      say(mod.UTF8ToString(mod._nw_message()));
+      $('status').textContent = 'not running';
+      return false;
+    }
+    say('');
+    lastWords = words;
+    canvas.width = mod._nw_width();
+    canvas.height = mod._nw_height();
+    canvas.style.maxWidth = canvas.width + 'px';
+    image = null;
+    tickMs.length = 0;
+    $('engine').value = mod.UTF8ToString(mod._nw_engine());
+    const scene = words[words.lastIndexOf('--scene') + 1];
+    if (words.includes('--scene') && [...$('scene').options].some((o) => o.value === scene)) $('scene').value = scene;
+    running = true;
+    const mine = generation;
+    requestAnimationFrame(() => frame(mine));
+    return true;
+  }
+
+  function frame(mine) {
+    if (mine !== generation || !running) return;
+    steerCurvature();
+    const t0 = performance.now();
+    const more = mod._nw_tick();
+    tickMs.push(performance.now() - t0);
+    if (tickMs.length > 60) tickMs.shift();
+    showState();
+    if (more) requestAnimationFrame(() => frame(mine));
+    else ended();
+  }
+
+  function ended() {
+    running = false;
+    releaseAll();
+    say(mod.UTF8ToString(mod._nw_message()));
+    const link = $('download');
+    if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
+    link.href = URL.createObjectURL(new Blob([mod.UTF8ToString(mod._nw_recording())], {type: 'text/plain'}));
+    link.hidden = false;
+    $('status').textContent += ' · ended';
+    while (waiting.length) waiting.shift()();
+  }
+
+  function showState() {
+    const K = mod._nw_curvature();
+    if (kTarget === null && document.activeElement !== $('curvature')) $('curvature').value = K;
+    $('k-value').textContent = K.toFixed(2);
+    const projection = mod.UTF8ToString(mod._nw_projection());
+    if (document.activeElement !== $('projection')) $('projection').value = projection;
+    const ms = tickMs.reduce((a, b) => a + b, 0) / Math.max(tickMs.length, 1);
+    $('status').textContent = `frame ${mod._nw_frame()} · K = ${K.toFixed(3)} · ${projection} · ` +
+        `${mod.UTF8ToString(mod._nw_engine())} engine · ${ms.toFixed(2)} ms a frame`;
+  }
+
+  // ---- input ----------------------------------------------------------------------------------
+  function input(c, pressed) {
+    if (running && c >= 0) mod._nw_input(c, pressed ? 1 : 0);
+  }
+  function releaseAll() {
+    for (const c of keysHeld.values()) input(c, false);
+    keysHeld.clear();
+    if (kHeld >= 0) input(kHeld, false);
+    kTarget = null, kHeld = -1;
+  }
+
+  function onKey(e, pressed) {
+    const t = e.target;
+    if (t && (t.tagName === 'TEXTAREA' || t.tagName === 'SELECT' || (t.tagName === 'INPUT' && t.type !== 'range'))) return;
+    if (!running || e.ctrlKey || e.metaKey || e.altKey) return;
+    if (pressed) {
+      const c = keysHeld.has(e.key) ? keysHeld.get(e.key) : call('nw_key', 'number', [e.key]);
+      if (c < 0) return;
+      e.preventDefault();
+      if (keysHeld.has(e.key)) return;  // the keyboard's auto-repeat
+      keysHeld.set(e.key, c);
+      input(c, true);
+    } else {
+      // Released under another name (Shift let go before "+"): the control it was pressed as.
+      let c = keysHeld.get(e.key);
+      if (c === undefined) c = call('nw_key', 'number', [e.key]);
+      if (c < 0) return;
+      e.preventDefault();
+      keysHeld.delete(e.key);
+      for (const [k, held] of keysHeld) if (held === c) keysHeld.delete(k);
+      input(c, false);
+    }
+  }
+
+  function touchButtons() {
+    const box = $('touch');
+    for (const [name, label] of TOUCH) {
+      const c = control[name];
+      if (c < 0) continue;  // a control this build has not
+      const b = document.createElement('button');
+      b.type = 'button';
+      b.textContent = label;
+      b.dataset.control = name;
+      let down = false;
+      const press = (e) => {
+        e.preventDefault();
+        if (e.pointerId !== undefined) b.setPointerCapture(e.pointerId);
+        if (down) return;
+        down = true;
+        b.classList.add('held');
+        input(c, true);
+      };
+      const release = (e) => {
+        e.preventDefault();
+        if (!down) return;
+        down = false;
+        b.classList.remove('held');
+        input(c, false);
+      };
+      b.addEventListener('pointerdown', press);
+      for (const type of ['pointerup', 'pointercancel', 'lostpointercapture']) b.addEventListener(type, release);
+      b.addEventListener('contextmenu', (e) => e.preventDefault());
+      box.appendChild(b);
+    }
+  }
+
+  // The K slider steers K to its value by holding curvature up or down, as a visitor holding the
+  // button would: the recording replays it.
+  function steerCurvature() {
+    if (kTarget === null) return;
+    const K = mod._nw_curvature();
+    const want = kTarget > K ? control.curvature_up : kTarget < K ? control.curvature_down : -1;
+    if (kHeld >= 0 && want !== kHeld) {  // reached or passed: done
+      input(kHeld, false);
+      kTarget = null, kHeld = -1;
+    } else if (kHeld < 0) {
+      if (want >= 0) input(want, true);
+      kHeld = want;
+      if (want < 0) kTarget = null;
+    }
+  }
+
+  function wireControls() {
+    window.addEventListener('keydown', (e) => onKey(e, true));
+    window.addEventListener('keyup', (e) => onKey(e, false));
+    window.addEventListener('blur', () => {
+      for (const c of keysHeld.values()) input(c, false);
+      keysHeld.clear();
+    });
+    const scene = $('scene');
+    for (const name of builtins) scene.add(new Option(name, name));
+    scene.addEventListener('change', () => start(wordsWith(scene.value, $('engine').value)) && canvas.focus());
+    $('engine').addEventListener('change', () => start(wordsWith(lastScene(), $('engine').value)) && canvas.focus());
+    $('projection').addEventListener('change', (e) => {
+      const taps = call('nw_projection_taps', 'number', [e.target.value]);
+      for (let i = 0; i < taps; ++i) input(control.projection, true), input(control.projection, false);
+      canvas.focus();
+    });
+    $('curvature').addEventListener('input', (e) => {
+      if (kHeld >= 0) input(kHeld, false);
+      kHeld = -1;
+      kTarget = Number(e.target.value);
+    });
+    $('stop').addEventListener('click', () => mod._nw_stop());
+    $('restart').addEventListener('click', () => start(lastWords) && canvas.focus());
+    $('run-text').addEventListener('click', () => runText('pasted.toml', $('scene-text').value));
+    $('scene-file').addEventListener('change', async (e) => {
+      const file = e.target.files[0];
+      if (file) runText(file.name.replace(/[^\w.-]/g, '_'), await file.text());
+    });
+  }
+  function lastScene() {
+    const i = lastWords.lastIndexOf('--scene');
+    return i >= 0 ? lastWords[i + 1] : 'kiosk';
+  }
+  function runText(name, text) {
+    mod.FS.writeFile('/' + name, text);
+    if (![...$('scene').options].some((o) => o.value === '/' + name)) $('scene').add(new Option(name, '/' + name));
+    if (start(wordsWith('/' + name, $('engine').value))) canvas.focus();
+  }
+
+  // ---- for tests and embedding pages ------------------------------------------------------------
+  let readyResolve;
+  const ready = new Promise((resolve) => { readyResolve = resolve; });
+  window.noneuclid = {
+    ready,  // resolves once the first run has started (true) or could not (false)
+    state: () => ({
+      running, frame: mod ? mod._nw_frame() : 0, K: mod ? mod._nw_curvature() : 0,
+      message: $('message').hidden ? '' : $('message').textContent,
+    }),
+    // Resolves when the run has ended: stop() ends it after the frame being drawn.
+    ended: () => new Promise((resolve) => running ? waiting.push(resolve) : resolve()),
+    stop() {
+      const done = this.ended();
+      if (running) mod._nw_stop();
+      return done;
+    },
+    recording: () => mod ? mod.UTF8ToString(mod._nw_recording()) : '',
+    // `frames` frames back to back (not waiting for the screen), timed: milliseconds a frame,
+    // and of that the part spent in putImageData.
+    bench(frames) {
+      let n = 0;
+      presentMs = 0;
+      const t0 = performance.now();
+      while (n < frames && mod._nw_tick()) ++n;
+      const ms = performance.now() - t0;
+      return {frames: n, ms: ms / Math.max(n, 1), present_ms: presentMs / Math.max(n, 1)};
+    },
+  };
+
+  createNoneuclid({
+    noneuclidPresent: present,
+    noneuclidReadBack: readBack,
+    print: (text) => console.log(text),
+    printErr: (text) => console.warn(text),
+  }).then(async (m) => {
+    mod = m;
+    builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
+    for (const [name] of TOUCH.concat([['projection'], ['curvature_up'], ['curvature_down']]))
+      control[name] = call('nw_control', 'number', [name]);
+    touchButtons();
+    wireControls();
+    try {
+      startWords = await wordsOfUrl();
+    } catch (e) {
+      say(e.message);
+      readyResolve(false);
+      return;
+    }
+    readyResolve(start(startWords));
+    canvas.focus();
+  });
+})();

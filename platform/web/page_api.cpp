@@ -1,0 +1,210 @@
+// What the web page calls (platform/web/page/page.js): `noneuclid run` in a browser. The page
+// hands over the same option words as the command line (from its URL and its controls), with
+// scene and actions files written into the module's memory file system; the one option reader
+// (app/options.cpp) reads them, and the one frame loop (app/frame_loop.cpp) runs on the page's
+// display, one tick per animation frame. Every run is recorded, as `run --record` would, so that
+// the page can offer the recording and `noneuclid render --actions` can replay it.
+#include <emscripten.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/frame_loop.hpp"
+#include "app/setup.hpp"
+#include "web_display.hpp"
+
+namespace noneuclid::web {
+namespace {
+
+// One run: everything the frame loop points into lives here, as long as the run.
+struct Run {
+    app::Script script;
+    app::Options options;
+    world::Scene scene;
+    platform::LoadedFont font;
+    std::unique_ptr<WebDisplay> display;
+    char* recording = nullptr;  // the recording so far (open_memstream)
+    std::size_t recording_size = 0;
+    std::FILE* recording_file = nullptr;
+    std::unique_ptr<app::Recorder> recorder;
+    std::unique_ptr<app::Session> session;
+    std::unique_ptr<app::FrameLoop> loop;
+    bool done = false;
+
+    ~Run() {
+        loop.reset(), session.reset(), recorder.reset();
+        if (recording_file) std::fclose(recording_file);
+        std::free(recording);
+    }
+};
+
+std::unique_ptr<Run> g_run;
+std::string g_message;
+
+// Options of `run` that a page has no use for: one sentence each.
+void refuse_options(const app::Options& o) {
+    const app::Options d = app::defaults(app::Command::run);
+    if (!o.display.empty()) app::usage_error("--display is not for a web page: the page is the display.");
+    if (!o.board.empty() || o.input != d.input)
+        app::usage_error("--board and --input are the kiosk's buttons: a web page has its keys and touch buttons.");
+    if (!o.record.empty())
+        app::usage_error("--record is not for a web page: it records every run; take the recording from its link.");
+    if (!o.screenshot.empty())
+        app::usage_error("--screenshot is not for a web page: save the picture from the page (right-click it).");
+    if (!o.scores.empty() && o.scores != "none")
+        app::usage_error("--scores is not for a web page: it keeps no files (--best sets the high score it shows).");
+    if (o.threads != d.threads) app::usage_error("--threads is not for a web page: it draws on one thread.");
+    if (o.fps != d.fps) app::usage_error("--fps is not for a web page: it draws at the screen's refresh rate.");
+}
+
+void start(const std::vector<std::string>& words, Run& run) {
+    std::vector<char*> argv{const_cast<char*>("noneuclid")};
+    for (const std::string& w : words) argv.push_back(const_cast<char*>(w.c_str()));
+    app::Options& o = run.options;
+    o = app::layered_options(static_cast<int>(argv.size()), argv.data(), 1, app::Command::run, run.script);
+    refuse_options(o);
+    run.scene = app::load_scene(o);
+    run.font = app::load_font(o);
+    run.display = std::make_unique<WebDisplay>(o.width, o.height, o.format);
+    if (o.legend.empty()) o.legend = run.display->legend();
+    run.recording_file = open_memstream(&run.recording, &run.recording_size);
+    run.recorder = std::make_unique<app::Recorder>(run.recording_file);
+    app::record_settings(*run.recorder, o, "web", run.font, run.display->canvas().format());
+    run.session = app::make_session(o.engine, run.scene, app::session_options(o, run.scene, o.legend), run.font.font,
+                                    run.recorder.get());
+    app::LoopOptions lo;
+    lo.frames = o.frames, lo.fps = o.fps, lo.stats = o.stats;
+    run.loop = std::make_unique<app::FrameLoop>(*run.display, *run.session, o.actions.empty() ? nullptr : &run.script,
+                                                run.recorder.get(), lo);
+}
+
+// The page's keys (KeyboardEvent.key), as the desktop window has them (README, Controls).
+struct Key {
+    const char* key;
+    const char* control;  // a control's name: one this build has not (fire, before the game) maps no key
+};
+constexpr Key kKeys[] = {
+    {"ArrowUp", "thrust"},       {"w", "thrust"},         {"W", "thrust"},        {"ArrowLeft", "left"},
+    {"a", "left"},               {"A", "left"},           {"ArrowRight", "right"}, {"d", "right"},
+    {"D", "right"},              {"+", "curvature_up"},   {"=", "curvature_up"},  {"]", "curvature_up"},
+    {"-", "curvature_down"},     {"[", "curvature_down"}, {"1", "hyperbolic"},    {"2", "flat"},
+    {"3", "spherical"},          {"p", "projection"},     {"P", "projection"},    {"h", "hud"},
+    {"H", "hud"},                {"r", "reset"},          {"R", "reset"},         {" ", "fire"},
+    {"Escape", "quit"},
+};
+
+bool running() { return g_run && !g_run->done; }
+
+}  // namespace
+}  // namespace noneuclid::web
+
+using noneuclid::web::g_message;
+using noneuclid::web::g_run;
+
+extern "C" {
+
+// Starts a run from option words separated by newlines ("--scene\nkiosk\n--curvature\n-1").
+// 0 on success; 2 with one sentence in nw_message() for a bad word or file.
+EMSCRIPTEN_KEEPALIVE int nw_start(const char* words) {
+    g_run.reset();
+    std::vector<std::string> list;
+    for (const char *p = words, *q = words;; ++q) {
+        if (*q == '\n' || *q == '\0') {
+            if (q > p) list.emplace_back(p, q);
+            if (*q == '\0') break;
+            p = q + 1;
+        }
+    }
+    auto run = std::make_unique<noneuclid::web::Run>();
+    try {
+        noneuclid::web::start(list, *run);
+    } catch (const noneuclid::app::UsageError& e) {
+        g_message = e.message;
+        return 2;
+    }
+    g_run = std::move(run);
+    g_message.clear();
+    return 0;
+}
+
+// One frame. 1 while the run goes on; 0 once it has ended (frames reached, Esc, nw_stop).
+EMSCRIPTEN_KEEPALIVE int nw_tick() {
+    if (!noneuclid::web::running()) return 0;
+    if (g_run->loop->tick()) return 1;
+    const int status = g_run->loop->finish();
+    std::fflush(g_run->recording_file);
+    g_run->done = true;
+    g_message = status == 0 ? "" : "the run failed (see the console).";
+    return 0;
+}
+
+// The run ends after the frame being drawn.
+EMSCRIPTEN_KEEPALIVE void nw_stop() {
+    if (noneuclid::web::running()) g_run->display->close();
+}
+
+// A control's number (world::Control) by name, or -1 if this build has none by that name.
+EMSCRIPTEN_KEEPALIVE int nw_control(const char* name) {
+    noneuclid::world::Control c{};
+    return noneuclid::world::parse_control(name, c) ? static_cast<int>(c) : -1;
+}
+
+// A control pressed (1) or released (0): a touch button, the K slider.
+EMSCRIPTEN_KEEPALIVE void nw_input(int control, int pressed) {
+    if (!noneuclid::web::running() || control < 0 || control >= noneuclid::world::kControlCount) return;
+    g_run->display->queue({static_cast<noneuclid::world::Control>(control), pressed != 0});
+}
+
+// The control a key (KeyboardEvent.key) stands for, or -1.
+EMSCRIPTEN_KEEPALIVE int nw_key(const char* key) {
+    for (const noneuclid::web::Key& k : noneuclid::web::kKeys)
+        if (std::string(key) == k.key) return nw_control(k.control);
+    return -1;
+}
+
+// How many taps of the projection control turn the view to `name`; -1 for no such projection.
+EMSCRIPTEN_KEEPALIVE int nw_projection_taps(const char* name) {
+    namespace geo = noneuclid::geo;
+    const int count = static_cast<int>(std::size(geo::kProjections));
+    int now = 0, want = -1;
+    for (int i = 0; i < count; ++i) {
+        if (g_run && geo::kProjections[i] == g_run->session->options().draw.projection) now = i;
+        if (std::string(name) == geo::projection_name(geo::kProjections[i])) want = i;
+    }
+    return want < 0 ? -1 : (want - now + count) % count;
+}
+
+// The built-in scenes' names, one a line.
+EMSCRIPTEN_KEEPALIVE const char* nw_scenes() {
+    static std::string names;
+    if (names.empty())
+        for (const char* const* n = noneuclid::world::builtin_scene_names(); *n; ++n) names += std::string(*n) + "\n";
+    return names.c_str();
+}
+
+// The run's state, for the page's status line.
+EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->session->curvature() : 0; }
+EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->session->frame()) : 0; }
+EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
+    return g_run ? noneuclid::geo::projection_name(g_run->session->options().draw.projection) : "";
+}
+EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
+    return g_run ? noneuclid::app::engine_name(g_run->options.engine) : "";
+}
+EMSCRIPTEN_KEEPALIVE int nw_width() { return g_run ? g_run->display->canvas().width() : 0; }
+EMSCRIPTEN_KEEPALIVE int nw_height() { return g_run ? g_run->display->canvas().height() : 0; }
+
+// The recording so far: the settings and every control as it took effect (app/script.hpp).
+EMSCRIPTEN_KEEPALIVE const char* nw_recording() {
+    if (!g_run || !g_run->recording_file) return "";
+    std::fflush(g_run->recording_file);
+    return g_run->recording ? g_run->recording : "";
+}
+
+// The last error, one sentence ("" when the last call went well).
+EMSCRIPTEN_KEEPALIVE const char* nw_message() { return g_message.c_str(); }
+
+}  // extern "C"
