@@ -103,6 +103,14 @@ struct FixedFarSide {
         shift = std::countl_zero(d);
         return fx::detail::recip_q62(d << shift);  // 2^62 / (d 2^shift)
     }
+    // Whether (w, x, y) lies within 2^-10 of the antipode (S < 2^-10 past the equator), where
+    // Q16.16's x and y no longer tell its direction: project_vec would put it at theta = 0, on
+    // the east rim. Such a point lies outside the clip circle (kAntipodeMarginPx inside the rim
+    // is more than 2^-10 times any scale in px) and is not shown: the polyline breaks there.
+    bool near_antipode(int64_t w, int64_t x, int64_t y) const {
+        constexpr int64_t lim = int64_t{1} << 6;  // 2^-10 in Q16
+        return K > 0 && w < 0 && x < lim && x > -lim && y < lim && y > -lim && x * x + y * y < (int64_t{1} << 12);
+    }
     // False outside the domain: K <= 0, w >= -1/2, or within 2^-10 of the antipode.
     bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const {
         if (K <= 0 || w >= -(int64_t{1} << 15)) return false;
@@ -158,6 +166,7 @@ struct FixedEquidistantEval {
     [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const geo::Vec3<fx::fixed>& v) const {
         SubPoint s;
         if (far.point(w, x, y, s)) return spot_at(m, s);
+        if (far.near_antipode(w, x, y)) return {};
         return general_spot(K, m, v);
     }
     // a P + b Q, without overflow: for K <= 0 the weights lie in [0, 1] (Q30) and every product

@@ -222,7 +222,8 @@ CurveCheck check_body(const W& world, std::size_t i, geo::Projection p, int widt
                     best = std::min(best, std::hypot(r.x - (x + 0.5), r.y - (y + 0.5)));
                 }
             }
-        if (best > out.worst) out.worst = best, out.worst_body = b.desc->name;
+        if (best > out.worst)
+            out.worst = best, out.worst_body = b.desc->name + (" at (" + std::to_string(x) + ", " + std::to_string(y) + ")");
     }
     for (const detail::Sample& s : ref) {
         if (s.from_centre > view.clip() - 1.5) continue;
@@ -235,8 +236,9 @@ CurveCheck check_body(const W& world, std::size_t i, geo::Projection p, int widt
                 if (on[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)])
                     best = std::min(best, std::hypot(s.x - (x + 0.5), s.y - (y + 0.5)));
             }
-        if (best > out.gap) out.gap = best, out.gap_body = b.desc->name;
-        if (best > 1.5 && std::getenv("CURVE_DEBUG")) std::fprintf(stderr, "gap %g at %g %g (from centre %g, clip %g)\n", best, s.x, s.y, s.from_centre, view.clip());
+        if (best > out.gap)
+            out.gap = best,
+            out.gap_body = b.desc->name + (" at (" + std::to_string(s.x) + ", " + std::to_string(s.y) + ")");
     }
     return out;
 }
