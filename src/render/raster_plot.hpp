@@ -68,31 +68,6 @@ struct CanvasSink {
         const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
         return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
     }
-    // The pixel at p blended with coverage alpha in 1..255: what blend(x, y, alpha) writes there,
-    // for the pixel at p, with the format's arithmetic inlined.
-    [[gnu::always_inline]] void blend_at(uint8_t* p, int alpha) const {
-        if (alpha >= 255) return store(p - base);
-        const uint32_t a = static_cast<uint32_t>(alpha);
-        if constexpr (Bpp == 4) {
-            if (fast8888) {
-                uint32_t d;
-                std::memcpy(&d, p, 4);
-                const uint32_t r = mix8(color.r, (d >> 16) & 0xFF, a), g = mix8(color.g, (d >> 8) & 0xFF, a),
-                               b = mix8(color.b, d & 0xFF, a);
-                const uint32_t out = (d & 0xFF000000u) | r << 16 | g << 8 | b;
-                std::memcpy(p, &out, 4);
-                return;
-            }
-        }
-        // Canvas::blend, on the bytes at p: unpack, mix each 8-bit channel, pack.
-        uint32_t w = 0;
-        std::memcpy(&w, p, Bpp);
-        const PixelFormat& f = c.format();
-        const Rgb d = f.unpack(w);
-        auto mix = [alpha](int s, int t) { return static_cast<uint8_t>(t + ((s - t) * alpha + (s > t ? 127 : -127)) / 255); };
-        const uint32_t out = f.pack({mix(color.r, d.r), mix(color.g, d.g), mix(color.b, d.b)});
-        std::memcpy(p, &out, Bpp);
-    }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
         if constexpr (Bpp == 4) {

@@ -70,46 +70,5 @@ void wide_line(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t wid
     }
 }
 
-// The pixels of a one-pixel anti-aliased line into a canvas, where its whole footprint lies on
-// the canvas and in the row band: the same coverages as wide_line computes (the same set-up, the
-// same integer arithmetic per row), blended in the same way, but each column's two or three rows
-// without a check per pixel, at byte offsets, the blend inlined for the format. False (nothing
-// written) for a line reaching past the canvas or the band, which wide_line draws.
-template <int Bpp>
-bool aa_inside(Plotter<CanvasSink<Bpp>>& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1) {
-    const CanvasSink<Bpp> sink = p.sink;  // in locals: a pixel store may alias it
-    const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
-    const Columns col = columns<int64_t>(u0, u1);
-    if (col.count == 0) return true;
-    constexpr double kQ = 4294967296.0;
-    constexpr int64_t one = int64_t{1} << 32;
-    const double slope = dv / du;
-    const int64_t h = static_cast<int64_t>(std::sqrt(du * du + dv * dv) / std::fabs(du) * kQ);  // width 1 px
-    const double uc0 = static_cast<double>(col.first * kSub + kSub / 2);
-    int64_t v = static_cast<int64_t>((static_cast<double>(v0) + (uc0 - static_cast<double>(u0)) * slope) / kSub * kQ);
-    const int64_t dv_col = static_cast<int64_t>(slope * static_cast<double>(col.step) * kQ);
-    // The footprint: columns first .. last, rows from the band's least to its greatest v.
-    const int64_t last = col.first + (col.count - 1) * col.step;
-    const int64_t umin = col.first < last ? col.first : last, umax = col.first < last ? last : col.first;
-    const int64_t v_end = v + (col.count - 1) * dv_col;
-    const int64_t vlo = ((v < v_end ? v : v_end) - h / 2) >> 32, vhi = ((v < v_end ? v_end : v) + h / 2) >> 32;
-    const int64_t across = p.swap ? sink.width() : p.row1, across0 = p.swap ? 0 : p.row0;
-    const int64_t along = p.swap ? p.row1 : sink.width(), along0 = p.swap ? p.row0 : 0;
-    if (umin < along0 || umax >= along || vlo < across0 || vhi + 1 >= across) return false;
-    const std::ptrdiff_t major = (p.swap ? sink.stride : Bpp) * col.step, minor = p.swap ? Bpp : sink.stride;
-    uint8_t* at = sink.base + (p.swap ? col.first * sink.stride : col.first * Bpp);
-    for (int64_t k = 0; k < col.count; ++k, at += major, v += dv_col) {
-        const int64_t lo = v - h / 2, hi = v + h / 2;
-        int64_t r = lo >> 32;
-        uint8_t* px = at + r * minor;
-        for (; (r << 32) < hi; ++r, px += minor) {
-            const int64_t top = (r << 32) > lo ? (r << 32) : lo, bottom = ((r + 1) << 32) < hi ? ((r + 1) << 32) : hi;
-            const int alpha = static_cast<int>(((bottom - top) * 255 + (one >> 1)) >> 32);
-            if (alpha > 0) sink.blend_at(px, alpha);
-        }
-    }
-    return true;
-}
-
 }  // namespace
 }  // namespace noneuclid::render
