@@ -5,6 +5,8 @@
 # kiosk.png      the kiosk scene after 120 frames (2 s), anti-aliased, with the HUD, 800x480
 # curvature.png  the same scene and frame at K = -1, 0 and +1, side by side (three 400x400
 #                renders joined by the few lines of Python below: no imaging library needed)
+# textured.png   the textured scene (five textured bodies, one filled) at K = -1, 0 and +1;
+#                textured-sweep.png the same at K = -1, -0.5, 0, 0.5 and 1
 # game.png       the game at K = -1, played by game.actions (fire, key 1, turns, thrust)
 # game-timelapse.png  attract mode playing the game for 30 s (a headless run, recorded), a
 #                frame every 2 s over the last frame's grid
@@ -85,3 +87,9 @@ for k in -1 1; do
     done
     python3 "$tmp/join.py" "${panels[@]}" "docs/images/projections-k$k.png"
 done
+# The textured scene at K = -1, 0, +1, and through the sweep: K = -1, -0.5, 0, 0.5, 1.
+for k in -1 -0.5 0 0.5 1; do
+    "$nc" render --scene textured --frames 60 --aa --size 400x400 --curvature "$k" --out "$tmp/t$k.png"
+done
+python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t0.png" "$tmp/t1.png" docs/images/textured.png
+python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t-0.5.png" "$tmp/t0.png" "$tmp/t0.5.png" "$tmp/t1.png" docs/images/textured-sweep.png

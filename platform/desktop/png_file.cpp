@@ -1,4 +1,4 @@
-// write_png and read_png (app/platform.hpp) with libpng.
+// write_png, read_png and read_texture (app/platform.hpp) with libpng.
 #include "app/platform.hpp"
 
 #include <png.h>
@@ -7,7 +7,10 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
+
+#include "world/text_file.hpp"
 
 namespace noneuclid::platform {
 
@@ -108,6 +111,101 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
     png_read_end(png, nullptr);
     png_destroy_read_struct(&png, &info, nullptr);
     std::fclose(f);
+    return true;
+}
+
+
+namespace {
+// libpng reads a texture from the file's bytes in memory; reading past their end is an error.
+struct Bytes {
+    const std::string& data;
+    std::size_t at = 0;
+};
+void read_bytes(png_structp png, png_bytep out, png_size_t n) {
+    auto* b = static_cast<Bytes*>(png_get_io_ptr(png));
+    if (n > b->data.size() - b->at) png_error(png, "the file ends early");
+    std::memcpy(out, b->data.data() + b->at, n);
+    b->at += n;
+}
+uint32_t big_endian(const std::string& d, std::size_t at) {
+    return uint32_t{static_cast<uint8_t>(d[at])} << 24 | uint32_t{static_cast<uint8_t>(d[at + 1])} << 16 |
+           uint32_t{static_cast<uint8_t>(d[at + 2])} << 8 | uint32_t{static_cast<uint8_t>(d[at + 3])};
+}
+// The image's size from the PNG header (signature, then the IHDR chunk: length 13, "IHDR",
+// width, height), before libpng sees the file; false with the reason.
+bool png_header(const std::string& d, uint32_t& width, uint32_t& height, std::string& why) {
+    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+    if (d.size() < 8 || std::memcmp(d.data(), kSignature, 8) != 0) {
+        why = "it is not a PNG file (it does not begin with PNG's signature): save the image as PNG";
+        return false;
+    }
+    if (d.size() < 33 || big_endian(d, 8) != 13 || d.compare(12, 4, "IHDR") != 0) {
+        why = "it is truncated or damaged (its PNG header is incomplete): save the image again";
+        return false;
+    }
+    width = big_endian(d, 16), height = big_endian(d, 20);
+    return true;
+}
+}  // namespace
+
+bool read_texture(const std::string& path, world::Image& out, std::string& why) {
+    std::string bytes;
+    if (!world::read_text_file(path, world::kImageFileLimit, "a texture's PNG file", bytes, why)) {
+        why = path + ": " + why;
+        return false;
+    }
+    uint32_t w = 0, h = 0;
+    if (!png_header(bytes, w, h, why)) {
+        why = path + ": " + why;
+        return false;
+    }
+    const uint32_t most = world::kImageMaxSide;
+    if (w == 0 || h == 0 || w > most || h > most) {
+        why = path + ": it is " + std::to_string(w) + " x " + std::to_string(h) + " texels, " +
+              (w == 0 || h == 0 ? std::string("which no image is: save it again")
+                                : "over the " + std::to_string(most) + " x " + std::to_string(most) +
+                                      " a texture may be: scale it down");
+        return false;
+    }
+    PngMessages messages;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &messages, png_failed, png_warned);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    // What the decoder writes, reached through a pointer that does not change after setjmp (a
+    // local changed between setjmp and longjmp would be indeterminate after it).
+    struct Decoded {
+        std::vector<png_byte> rgb;
+        std::vector<png_bytep> rows;
+    };
+    const std::unique_ptr<Decoded> d = std::make_unique<Decoded>();
+    Bytes in{bytes};
+    if (!png || !info || setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, nullptr);
+        why = path + ": it is truncated or damaged" + (messages.text.empty() ? std::string() : " (libpng: " + messages.text + ")") +
+              ": save the image again";
+        return false;
+    }
+    png_set_read_fn(png, &in, read_bytes);
+    png_set_user_limits(png, most, most);
+    png_read_info(png, info);
+    png_set_expand(png);  // palette and grey below 8 bits to 8-bit RGB or grey
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    const std::size_t width = png_get_image_width(png, info), height = png_get_image_height(png, info);
+    if (png_get_rowbytes(png, info) != width * 3) png_error(png, "not 8-bit RGB after conversion");
+    d->rgb.assign(width * height * 3, 0);
+    d->rows.resize(height);
+    for (std::size_t y = 0; y < height; ++y) d->rows[y] = d->rgb.data() + y * width * 3;
+    png_read_image(png, d->rows.data());
+    png_read_end(png, nullptr);
+    png_destroy_read_struct(&png, &info, nullptr);
+    out.width = static_cast<int>(width), out.height = static_cast<int>(height);
+    out.texels.resize(width * height);
+    for (std::size_t i = 0; i < width * height; ++i)
+        out.texels[i] = uint32_t{d->rgb[3 * i]} << 16 | uint32_t{d->rgb[3 * i + 1]} << 8 | d->rgb[3 * i + 2];
+    out.source = path;
     return true;
 }
 

@@ -1,4 +1,4 @@
-// write_png and read_png (app/platform.hpp) in a build without libpng: they say so.
+// write_png, read_png and read_texture (app/platform.hpp) in a build without libpng: they say so.
 #include "app/platform.hpp"
 
 namespace noneuclid::platform {
@@ -15,6 +15,11 @@ bool write_png(const std::string& path, const render::Canvas&, std::string& erro
 
 bool read_png(const std::string& path, int&, int&, std::string&, std::string& error) {
     error = std::string("cannot read ") + path + ": " + kNoPng + ".";
+    return false;
+}
+
+bool read_texture(const std::string& path, world::Image&, std::string& why) {
+    why = path + ": " + kNoPng + ", or name a built-in image (builtin:checker, builtin:rock)";
     return false;
 }
 

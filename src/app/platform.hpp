@@ -13,6 +13,7 @@
 #include "render/canvas.hpp"
 #include "render/font.hpp"
 #include "world/board.hpp"
+#include "world/image.hpp"
 
 namespace noneuclid::platform {
 
@@ -99,6 +100,12 @@ std::string state_file(const std::string& name, std::string& error);
 bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error);
 // Reads an 8-bit RGB or RGBA PNG into `rgb` (3 bytes a pixel, rows packed).
 bool read_png(const std::string& path, int& width, int& height, std::string& rgb, std::string& error);
+// Reads a PNG file as a texture (any PNG colour type and depth; alpha is ignored): at most
+// world::kImageFileLimit bytes, and its header checked before the image is decoded, so that an
+// image over world::kImageMaxSide texels either way is refused without being decoded. False
+// with one sentence (no full stop, the path in it) in `why`: missing, not a PNG file,
+// truncated or damaged, too large.
+bool read_texture(const std::string& path, world::Image& out, std::string& why);
 
 // An animated GIF written frame by frame (platform/desktop/gif_file.cpp, giflib), whole or not
 // at all as write_png writes (AtomicFile): `path` is untouched until finish() succeeds, and a

@@ -91,6 +91,7 @@ std::chrono::steady_clock::duration raster_band(const BandRaster& r, const Paral
     while (const BandEntry* e = next_in_world_order(head, f, waited)) {
         // A body wholly inside the band (its margin too) writes only there: drawn as on one
         // thread, without the band's per-segment checks.
+        if (e->fill) fill_rows(r.canvas, *e->fill, y0, y1, r.fill_work[t]);
         const bool inside = e->top - f.margin >= int64_t{y0} * kSub && e->bottom + f.margin < int64_t{y1} * kSub;
         draw_screen_points(r.canvas, e->points, e->count, e->color, r.line, inside ? RowRange{} : RowRange{y0, y1});
     }

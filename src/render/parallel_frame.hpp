@@ -5,7 +5,7 @@
 //     bodies (ParallelScratch::home) and the rows they span, and enters each body in its list
 //     for every band it reaches (BandEntry). An entry's flag says it is written;
 //  2. raster (detail::raster_band, parallel_frame.cpp): each thread draws its band whole: its
-//     backdrop, then every body's lines clipped to the band (RowRange: exactly the pixels the
+//     backdrop, then every body's fill (render/fill.hpp) and lines clipped to the band (RowRange: exactly the pixels the
 //     whole line has there), in the world's order (the threads' lists for the band merged),
 //     waiting (yielding) for what another thread has not written yet.
 // Bands are disjoint, so no two threads write one pixel, and each pixel gets the same writes in
@@ -29,6 +29,7 @@
 #include "render/body_points.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_options.hpp"
+#include "render/fill.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
 #include "render/shape_cache.hpp"
@@ -53,6 +54,7 @@ struct BandEntry {
     uint32_t idx = kEnd;               // the body's index in World::bodies
     const SubPoint* points = nullptr;  // in the arena of the thread that did the body
     Rgb color{};
+    const FillJob* fill = nullptr;   // the body's fill, drawn first (render/fill.hpp)
     std::atomic<uint32_t> ready{0};  // the frame generation this entry was written in
 };
 
@@ -116,6 +118,7 @@ struct ParallelScratch : ParallelScratchBase {
     std::vector<geo::Vec3<T>> vectors;
     std::size_t stride_v = 1, stride_vec = 1;
     std::vector<ShapeCache<T>> shapes;  // world.bodies[i]'s is shapes[i], refreshed by the thread that does it
+    FillScratch<T> fill;                // each body's fill planned by the thread that does it; a RowWork per thread
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
@@ -132,6 +135,7 @@ struct ParallelScratch : ParallelScratchBase {
         vertices.resize(stride_v * static_cast<std::size_t>(pool.size()));
         vectors.resize(stride_vec * static_cast<std::size_t>(pool.size()));
         make_shape_caches(world, shapes);
+        fill.prepare(world, pool.size());
     }
 };
 
@@ -170,6 +174,7 @@ struct FrameBands {
     int threads = 0;
     uint32_t generation = 0;
     int64_t margin = 0;  // a body's pixels lie within its points' rows widened by this (row_margin)
+    int width = 0, height = 0;  // the canvas's (a fill's rows and columns are clipped to it)
     int row[kMaxBandThreads + 1] = {};
     // Whether a body whose points span rows [top, bottom] (1/256 px) can put pixels in band k.
     bool reaches(int k, int32_t top, int32_t bottom) const {
@@ -195,6 +200,7 @@ struct BandRaster {
     const DrawOptions& options;
     bool backdrop;
     LineStyle line;
+    RowWork* fill_work;  // thread t's is fill_work[t]
 };
 // Thread t's raster (parallel_frame.cpp): band t's backdrop, then the bodies that reach it, in
 // the world's order, from the threads' lists for it. Returns the time it waited for them.
@@ -241,19 +247,22 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
         const std::size_t idx = static_cast<std::size_t>(i);
         const auto& b = world.bodies[idx];
         SubPoint* pts = arena;
-        const std::size_t n = body_shown(b, o) ? body_screen_points(world, b, s.shapes[idx], m, o, verts, vecs, pts) : 0;
-        const RowSpan span = row_span(pts, n);
+        const bool shown = body_shown(b, o);
+        const std::size_t n = shown ? body_screen_points(world, b, s.shapes[idx], m, o, verts, vecs, pts) : 0;
+        RowSpan span = row_span(pts, n);
+        const FillJob* fj = shown ? s.fill.plan(world, idx, m, o, f.width, f.height) : nullptr;
+        if (fj) span = {std::min(span.top, fj->top * kSub), std::max(span.bottom, fj->bottom * kSub - 1)};
         // Next frame's home: the band of the points' middle row. Written only when it changes
         // (rarely): the threads' bodies share these cache lines.
         const uint8_t h = span.top <= span.bottom
                               ? static_cast<uint8_t>(f.band_of((int64_t{span.top} + span.bottom) / 2 / kSub))
                               : home[idx];
         if (next_home[idx] != h) next_home[idx] = h;
-        for (int k = 0; k < threads && n > 0; ++k) {
+        for (int k = 0; k < threads && (n > 0 || fj); ++k) {
             if (!f.reaches(k, span.top, span.bottom)) continue;
             BandEntry& e = list[k][listed[k]++];
             e.top = span.top, e.bottom = span.bottom, e.count = static_cast<uint32_t>(n), e.idx = static_cast<uint32_t>(idx);
-            e.points = pts, e.color = body_color(b, o);
+            e.points = pts, e.color = body_color(b, o), e.fill = fj;
             e.ready.store(gen, std::memory_order_release);
         }
         arena += ParallelScratchBase::arena_step(n);
@@ -271,10 +280,12 @@ template <class W>
 void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
                    ParallelScratch<typename W::scalar>& s, bool backdrop) {
     if (backdrop) draw_backdrop(c, m, o);
+    s.fill.begin_frame(c);
     const std::size_t nb = std::min(s.bodies, world.bodies.size());
     for (std::size_t i = 0; i < nb; ++i) {
         const auto& b = world.bodies[i];
         if (!body_shown(b, o)) continue;
+        if (const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height())) fill_rows(c, *j, 0, c.height(), s.fill.work[0]);
         const std::size_t n =
             body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
         draw_screen_points(c, s.points.data(), n, body_color(b, o), LineStyle{o.antialias, o.line_width});
@@ -296,7 +307,9 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
     const LineStyle line{o.antialias, o.line_width};
     detail::FrameBands bands;
     detail::start_frame(s, c.height(), threads, line, bands);
-    const detail::BandRaster raster{c, limit_circle(m), o, backdrop, line};
+    bands.width = c.width(), bands.height = c.height();
+    s.fill.begin_frame(c);
+    const detail::BandRaster raster{c, limit_circle(m), o, backdrop, line, s.fill.work.data()};
     auto job = [&](int t) {
         const clock::time_point started = clock::now();
         detail::geometry_of_thread(world, m, o, s, bands, t);

@@ -62,6 +62,9 @@ bool add_game_slots(Scene& scene, std::string& why) {
         a.name = "asteroid";
         a.role = BodyKind::asteroid;
         a.color = g.asteroid_color;
+        a.filled = g.asteroid_filled, a.fill = g.asteroid_fill;
+        a.texture = g.asteroid_texture, a.texture_scale = g.asteroid_texture_scale;
+        a.texture_bilinear = g.asteroid_texture_bilinear;
         a.tessellation = 3;
         for (int k = 0; k < g.vertices; ++k) a.vertices.push_back({g.sizes[0], kTurnDeg * k / g.vertices});
         scene.bodies.push_back(a);

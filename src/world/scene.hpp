@@ -9,8 +9,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
+
+#include "world/image.hpp"
 
 namespace noneuclid::world {
 
@@ -35,6 +38,13 @@ struct SceneBody {
     double accel = 0, accel_direction_deg = 0;  // constant acceleration (scene files may set it)
     double spin_deg = 0;                      // degrees per second
     Rgb color;
+    // Filled (render/fill.hpp; a closed body of 3 or more vertices): with `fill`, or with the
+    // texture, mapped on the body's local equidistant coordinates; the outline is drawn over it.
+    bool filled = false;
+    Rgb fill;
+    std::shared_ptr<const Image> texture;  // null: no texture
+    double texture_scale = 1;              // the image's width in diameters of the body
+    bool texture_bilinear = false;         // texels blended (else the nearest)
     bool closed = true;
     int tessellation = 8;
     struct Vertex {
@@ -73,6 +83,12 @@ struct GameSettings {
     double game_over_seconds = 5;    // the game-over screen, before the "press fire" one
     std::vector<double> levels = {0, -1, 1};  // K at each level's start, in turn (empty: unchanged)
     Rgb asteroid_color{200, 190, 170}, bullet_color{255, 255, 160};
+    // The asteroids filled with a colour, or textured (SceneBody's fill and texture).
+    bool asteroid_filled = false;
+    Rgb asteroid_fill{90, 84, 76};
+    std::shared_ptr<const Image> asteroid_texture;
+    double asteroid_texture_scale = 1;
+    bool asteroid_texture_bilinear = false;
 };
 
 struct Scene {

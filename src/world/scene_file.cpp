@@ -14,7 +14,66 @@ namespace {
 
 using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 
-void read_body(const toml::table& t, int index, Scene& scene) {
+// Where a scene's textures come from: the built-in images by name, files through the reader
+// (each file read once however many bodies name it), relative to the scene file's directory.
+struct Images {
+    const ImageReader& reader;
+    std::string dir;  // the scene file's directory, with its '/', or ""
+    std::vector<std::pair<std::string, std::shared_ptr<const Image>>> read;
+
+    // The image `key` names in the table read by r (its value as written), or a Bad at its place.
+    std::shared_ptr<const Image> get(const Reader& r, const char* key, const std::string& context) {
+        const std::string name = r.plain_string(key, "");
+        const toml::node* node = r.table().get(key);
+        const std::string shown = context + "texture " + quote(name) + ": ";
+        if (name.empty()) throw Bad{node->source(), shown + "expected a PNG file's name or a built-in image"};
+        const bool builtin = name.rfind(kBuiltinImagePrefix, 0) == 0;
+        const std::string path = builtin || name[0] == '/' ? name : dir + name;
+        for (const auto& [p, image] : read)
+            if (p == path) return image;
+        auto image = std::make_shared<Image>();
+        std::string why;
+        if (builtin) {
+            if (!builtin_image(name, *image)) {
+                std::string names;
+                for (const char* const* n = builtin_image_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
+                throw Bad{node->source(), shown + "there is no such built-in image (" + names + ")"};
+            }
+        } else if (!reader) {
+            throw Bad{node->source(), shown + "image files cannot be read here: name a built-in image (builtin:checker, builtin:rock)"};
+        } else if (!reader(path, *image, why)) {
+            throw Bad{node->source(), shown + why};
+        }
+        read.emplace_back(path, image);
+        return image;
+    }
+};
+
+// fill, texture, texture_scale, texture_filter (with `prefix`: the game's asteroid_fill, ...).
+struct Surface {
+    bool filled = false;
+    Rgb fill;
+    std::shared_ptr<const Image> texture;
+    double scale = 1;
+    bool bilinear = false;
+};
+Surface read_surface(const Reader& r, const std::string& prefix, const std::string& context, Images& images, Surface s) {
+    const std::string fill = prefix + "fill", texture = prefix + "texture", scale = prefix + "texture_scale",
+                      filter = prefix + "texture_filter";
+    if (r.table().get(fill)) s.filled = true, s.fill = r.color(fill.c_str(), s.fill);
+    if (r.table().get(texture)) s.texture = images.get(r, texture.c_str(), context);
+    s.scale = r.number(scale.c_str(), s.scale, 0.05, 20, "the image's width in diameters of the body");
+    if (const toml::node* f = r.table().get(filter)) {
+        const std::string v = r.string(filter.c_str(), "");
+        if (v != "nearest" && v != "bilinear")
+            throw Bad{f->source(), context + "expected " + quote(filter) + " = \"nearest\" or \"bilinear\", found \"" +
+                                       printable(v) + "\""};
+        s.bilinear = v == "bilinear";
+    }
+    return s;
+}
+
+void read_body(const toml::table& t, int index, Scene& scene, Images& images) {
     SceneBody b;
     {
         const Reader pre(t, "");
@@ -22,7 +81,7 @@ void read_body(const toml::table& t, int index, Scene& scene) {
     }
     const Reader r(t, "body " + quote(b.name) + ": ");
     r.only({"name", "position", "facing", "velocity", "acceleration", "spin", "color", "closed", "tessellation",
-            "vertices", "controlled", "grid"});
+            "vertices", "controlled", "grid", "fill", "texture", "texture_scale", "texture_filter"});
     r.pair("position", b.r, b.theta_deg, 0, Ranges::kReach, "r, theta in degrees");
     b.facing_deg = r.number("facing", 0, -1e6, 1e6, "degrees");
     r.pair("velocity", b.speed, b.direction_deg, 0, Ranges::kSpeed, "speed in world units per second, direction in degrees");
@@ -49,6 +108,11 @@ void read_body(const toml::table& t, int index, Scene& scene) {
         vx.phi_deg = r.as_number(*p->get(1), "vertices", -1e6, 1e6, "phi in degrees from the facing");
         b.vertices.push_back(vx);
     }
+    const Surface surface = read_surface(r, "", "body " + quote(b.name) + ": ", images, {});
+    b.filled = surface.filled, b.fill = surface.fill, b.texture = surface.texture;
+    b.texture_scale = surface.scale, b.texture_bilinear = surface.bilinear;
+    if ((b.filled || b.texture) && (!b.closed || b.vertices.size() < 3))
+        throw Bad{t.source(), "body " + quote(b.name) + ": a fill or a texture needs a closed outline of 3 or more vertices"};
     std::string why;
     if (!body_within_ranges(b, scene.limit_radius, why)) throw Bad{t.source(), why};
     scene.bodies.push_back(std::move(b));
@@ -101,12 +165,13 @@ std::vector<double> numbers(const Reader& r, const char* key, std::size_t n, dou
 }
 
 // [game]: the Asteroids game's settings (docs/game.md), over the defaults.
-void read_game(const toml::table& t, GameSettings& g) {
+void read_game(const toml::table& t, GameSettings& g, Images& images) {
     const Reader r(t, "game: ");
     r.only({"seed", "lives", "asteroids", "asteroids_step", "asteroids_max", "sizes", "points", "asteroid_speed",
             "asteroid_spin", "asteroid_vertices", "split_speed", "bullet_speed", "bullet_range", "bullet_cooldown",
             "bullets", "ship_speed", "invulnerable", "respawn_delay", "level_pause", "game_over", "levels",
-            "asteroid_color", "bullet_color"});
+            "asteroid_color", "bullet_color", "asteroid_fill", "asteroid_texture", "asteroid_texture_scale",
+            "asteroid_texture_filter"});
     g.on = true;
     g.seed = static_cast<uint32_t>(r.integer("seed", static_cast<long>(g.seed), 0, 2147483647L, "the random numbers' seed"));
     g.lives = static_cast<int>(r.integer("lives", g.lives, 1, 99, "ships"));
@@ -140,9 +205,13 @@ void read_game(const toml::table& t, GameSettings& g) {
     if (t.get("levels")) g.levels = numbers(r, "levels", 0, -1, 1, "K at each level's start, in turn");
     g.asteroid_color = r.color("asteroid_color", g.asteroid_color);
     g.bullet_color = r.color("bullet_color", g.bullet_color);
+    Surface s{g.asteroid_filled, g.asteroid_fill, g.asteroid_texture, g.asteroid_texture_scale, g.asteroid_texture_bilinear};
+    s = read_surface(r, "asteroid_", "game: ", images, s);
+    g.asteroid_filled = s.filled, g.asteroid_fill = s.fill, g.asteroid_texture = s.texture;
+    g.asteroid_texture_scale = s.scale, g.asteroid_texture_bilinear = s.bilinear;
 }
 
-void read_scene(const toml::table& root, Scene& s) {
+void read_scene(const toml::table& root, Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
             "game"});
@@ -162,12 +231,12 @@ void read_scene(const toml::table& root, Scene& s) {
         for (const toml::node& g : *grids) read_grid(*g.as_table(), s);
     if (const toml::array* bodies = tables(root, "body")) {
         int i = 0;
-        for (const toml::node& b : *bodies) read_body(*b.as_table(), i++, s);
+        for (const toml::node& b : *bodies) read_body(*b.as_table(), i++, s, images);
     }
     if (const toml::node* game = root.get("game")) {
         const toml::table* t = game->as_table();
         if (!t) throw Bad{game->source(), std::string("expected a [game] table, found ") + type_name(*game)};
-        read_game(*t, s.game);
+        read_game(*t, s.game, images);
         std::string why;
         if (!add_game_slots(s, why)) throw Bad{t->source(), "game: " + why};
     }
@@ -183,19 +252,21 @@ std::string SceneError::to_string() const {
     return o.str();
 }
 
-bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error) {
+bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error,
+                 const ImageReader& reader) {
     out = Scene{};
     out.name = name;
-    return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_scene(root, out); });
+    Images images{reader, name.substr(0, name.rfind('/') + 1), {}};
+    return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_scene(root, out, images); });
 }
 
-bool load_scene_file(const std::string& path, Scene& out, SceneError& error) {
+bool load_scene_file(const std::string& path, Scene& out, SceneError& error, const ImageReader& images) {
     std::string text, why;
     if (!read_text_file(path, kSceneFileLimit, "a scene file", text, why)) {
         error = {path, 0, 0, "the scene file: " + why + ": check the path, or name a built-in scene (see --help)"};
         return false;
     }
-    return parse_scene(text, path, out, error);
+    return parse_scene(text, path, out, error, images);
 }
 
 }  // namespace noneuclid::world

@@ -14,12 +14,15 @@
 //     vertices = [[0.1, 0.0], [0.1, 140.0], [0.1, 220.0]]   # local [rho, phi deg] from facing
 //
 // plus, all optional: presets = [...], thrust, turn_rate, curvature_rate, sweep_rate at the top;
-// acceleration = [a, direction deg], controlled, grid in a body; [[grid]] tables
+// acceleration = [a, direction deg], controlled, grid, fill = "#rrggbb", texture = "file.png",
+// texture_scale, texture_filter in a body; [[grid]] tables
 // (kind = "axes" with spacing, or "radial" with lines; length, step, color).
 #pragma once
 
+#include <functional>
 #include <string>
 
+#include "world/image.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::world {
@@ -32,9 +35,18 @@ struct SceneError {
     std::string to_string() const;
 };
 
-// Reads a scene file. On failure returns false and fills `error`.
-bool load_scene_file(const std::string& path, Scene& out, SceneError& error);
-// The same from a string (`name` is used in messages in place of a path).
-bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error);
+// Reads the image file at `path` for a texture (texture = "file.png"; app/setup.cpp reads PNG
+// through the platform). False with one sentence (no full stop) in `why`: what is wrong with
+// the image and how to fix it. Built-in images ("builtin:...") never reach it.
+using ImageReader = std::function<bool(const std::string& path, Image& out, std::string& why)>;
+
+// Reads a scene file. On failure returns false and fills `error`. A texture's file is read with
+// `images`, its path taken relative to the scene file's directory; without a reader only the
+// built-in images can be named.
+bool load_scene_file(const std::string& path, Scene& out, SceneError& error, const ImageReader& images = {});
+// The same from a string (`name` is used in messages in place of a path, and as the path that
+// textures are relative to).
+bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error,
+                 const ImageReader& images = {});
 
 }  // namespace noneuclid::world

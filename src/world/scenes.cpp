@@ -1,13 +1,15 @@
-// The built-in scenes: the paper's figures, the kiosk's default, the Asteroids game, and a
-// parametric stress scene.
+// The built-in scenes: the paper's figures, the kiosk's default, the Asteroids game, textured
+// bodies, and a parametric stress scene.
 #include <cmath>
 #include <cstdio>
 
 #include "world/scene.hpp"
 
 #include <algorithm>
+#include <memory>
 
 #include "world/budget.hpp"
+#include "world/image.hpp"
 
 namespace noneuclid::world {
 namespace {
@@ -119,6 +121,47 @@ void asteroids(Scene& s) {
     s.game.on = true;
     add_game_slots(s, unused);  // the kiosk's ship and the default settings always fit
 }
+// Five textured bodies about 60 px across on the kiosk's 800x480 screen (0.4 from their
+// centres: 61 px at K = 0), in the built-in images, and one filled: a hexagon, an irregular
+// asteroid, a square, a five-pointed star, a thick "C" that is not star-shaped about its centre
+// (its centre lies outside it), and a filled triangle; still, turning slowly, over the axis grid.
+void textured(Scene& s) {
+    s.curvature = 0;
+    axis_grid(s);
+    auto image = [](const char* name) {
+        auto im = std::make_shared<Image>();
+        builtin_image(name, *im);
+        return im;
+    };
+    const std::shared_ptr<const Image> checker = image("builtin:checker"), rock = image("builtin:rock");
+    auto textured_body = [&](SceneBody b, std::shared_ptr<const Image> im) {
+        b.texture = std::move(im);
+        b.tessellation = 8;
+        return b;
+    };
+    s.bodies.push_back(place(textured_body(polygon("hexagon", 6, 0.4, 0, {255, 220, 160}), checker), 0.9, 30, 0, 0, 0, 8));
+    SceneBody rocky;
+    rocky.name = "asteroid";
+    rocky.color = {200, 190, 170};
+    const double rhos[] = {0.4, 0.33, 0.38, 0.3, 0.4, 0.36, 0.31, 0.39, 0.34, 0.37};
+    for (int i = 0; i < 10; ++i) rocky.vertices.push_back({rhos[i], 36.0 * i});
+    s.bodies.push_back(place(textured_body(rocky, rock), 1.6, 150, 20, 0, 0, -6));
+    s.bodies.push_back(place(textured_body(polygon("square", 4, 0.4, 45, {160, 220, 255}), checker), 2.1, 250, 10, 0, 0, 5));
+    SceneBody star;
+    star.name = "star";
+    star.color = {255, 255, 255};
+    for (int i = 0; i < 10; ++i) star.vertices.push_back({i % 2 == 0 ? 0.4 : 0.18, 90 + 36.0 * i});
+    s.bodies.push_back(place(textured_body(star, checker), 1.4, 320, 0, 0, 0, 10));
+    SceneBody c;
+    c.name = "crescent";
+    c.color = {230, 160, 230};
+    for (double phi : {40, 90, 140, 180, 220, 270, 320}) c.vertices.push_back({0.4, phi});
+    for (double phi : {300, 240, 180, 120, 60}) c.vertices.push_back({0.2, phi});
+    s.bodies.push_back(place(textured_body(c, rock), 2.4, 75, 200, 0, 0, -8));
+    SceneBody tri = polygon("triangle", 3, 0.3, 90, {64, 220, 120});
+    tri.filled = true, tri.fill = {30, 110, 60};
+    s.bodies.push_back(place(tri, 0.8, 200, 0, 0, 0, 12));
+}
 void stress(Scene& s, const SceneParams& p) {
     s.curvature = -1;
     uint32_t x = 2463534242u;  // xorshift32: the same scene every time
@@ -195,7 +238,7 @@ bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb co
 }
 
 const char* const* builtin_scene_names() {
-    static const char* const names[] = {"kiosk", "asteroids", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
+    static const char* const names[] = {"kiosk", "asteroids", "textured", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
     return names;
 }
 
@@ -209,6 +252,7 @@ bool builtin_scene(const std::string& name, const SceneParams& params, Scene& ou
     }
     if (name == "kiosk") kiosk(out);
     else if (name == "asteroids") asteroids(out);
+    else if (name == "textured") textured(out);
     else if (name == "fig1") fig1(out);
     else if (name == "fig14") geodesic_motion(out, 90);
     else if (name == "fig15") geodesic_motion(out, 45);

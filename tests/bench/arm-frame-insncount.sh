@@ -5,7 +5,9 @@
 #   tests/bench/arm-frame-insncount.sh [aarch64|armhf] [SCENE] [WxH] [FORMAT]
 #   defaults: aarch64 kiosk 800x480 rgb565 (the Pi's display)
 #   SCENE game:A:B is the game in play with A asteroids and B bullets in flight; its table adds
-#   the stage collide, the game's collision tests alone
+#   the stage collide, the game's collision tests alone. SCENE textured (five textured bodies and
+#   a filled one) or filled (the same with colours for textures) adds fill, the fills alone, and
+#   fillmemset, a memset of as many pixels as they cover
 #   BUILD_DIR=build/p8-aarch64 to use an existing cross build directory (default build/<target>)
 #   K=-0.6 to set the curvature (the kiosk starts at K = 0), K=sweep to change it every frame as
 #   attract mode does (the frame stage then rebuilds every body's shape cache); FRAMES=N (default 10)
@@ -41,7 +43,10 @@ echo
 echo "| stage | fixed | double | float | double/fixed |"
 echo "|---|---:|---:|---:|---:|"
 stages="frame step backdrop geometry raster copy memcpy"
-case $scene in game:*) stages="$stages collide" ;; esac
+case $scene in
+    game:*) stages="$stages collide" ;;
+    textured | filled) stages="$stages fill fillmemset" ;;
+esac
 for stage in $stages; do
     f=$(per_frame "$stage" fixed)
     d=$(per_frame "$stage" double)

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "displays.hpp"
 #include "render/blit.hpp"
 #include "render/draw_world.hpp"
 #include "fastest.hpp"
@@ -108,14 +109,7 @@ const char* const kStages[] = {"step", "backdrop", "backdrop_pixelwise", "geomet
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    struct Config {
-        const char* name;
-        int w, h;
-        render::PixelFormat f;
-    };
-    const Config configs[] = {{"800x480_rgb565", 800, 480, render::PixelFormat::rgb565()},
-                              {"1920x1080_xrgb8888", 1920, 1080, render::PixelFormat::xrgb8888()}};
-    for (const Config& cf : configs)
+    for (const BenchDisplay& cf : kBenchDisplays)
         for (const char* e : {"fixed", "double"})
             for (const char* sname : kStages) {
                 const std::string name = std::string(cf.name) + "/" + e + "/" + sname;
@@ -134,7 +128,7 @@ int main(int argc, char** argv) {
     std::printf("\nkiosk frame by stage, us of CPU time (share of the frame)\n\n");
     std::printf("| display | engine | step | backdrop | geometry | raster | copy | sum | frame | memcpy | copy/memcpy | backdrop pixelwise |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    for (const Config& cf : configs)
+    for (const BenchDisplay& cf : kBenchDisplays)
         for (const char* e : {"fixed", "double"}) {
             auto g = [&](const char* st) {
                 auto it = g_us.find(std::string(cf.name) + "/" + e + "/" + st);

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "displays.hpp"
 #include "render/draw_world.hpp"
 #include "render/parallel_frame.hpp"
 #include "fastest.hpp"
@@ -61,16 +62,9 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
 
 int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
-    struct Config {
-        const char* name;
-        int w, h;
-        render::PixelFormat f;
-    };
-    const Config configs[] = {{"800x480_rgb565", 800, 480, render::PixelFormat::rgb565()},
-                              {"1920x1080_xrgb8888", 1920, 1080, render::PixelFormat::xrgb8888()}};
     const int thread_counts[] = {0, 1, 2, 4};  // 0: the single-thread overload
     for (const char* sc : {"stress", "kiosk"})
-        for (const Config& cf : configs)
+        for (const BenchDisplay& cf : kBenchDisplays)
             for (const char* e : {"fixed", "double"})
                 for (int t : thread_counts) {
                     const std::string name = std::string(sc) + "/" + cf.name + "/" + e + "/" + (t == 0 ? "serial" : "threads" + std::to_string(t));
@@ -94,7 +88,7 @@ int main(int argc, char** argv) {
     std::printf("| scene | display | engine | serial | pool 1 | pool 2 | pool 4 | speedup 2 | speedup 4 | split 2 | 2 free cores |\n"
                 "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const char* sc : {"stress", "kiosk"})
-        for (const Config& cf : configs)
+        for (const BenchDisplay& cf : kBenchDisplays)
             for (const char* e : {"fixed", "double"}) {
                 const std::string base = std::string(sc) + "/" + cf.name + "/" + e + "/";
                 auto g = [&](const char* t) {

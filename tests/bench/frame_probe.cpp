@@ -3,8 +3,11 @@
 //     frame_probe STAGE ENGINE SCENE WxH FORMAT N [THREADS [K [TESSELLATION [VERTICES]]]]
 // STAGE: frame (world step + draw_world + copy to a second buffer, what the kiosk does per
 // frame, HUD aside), step, backdrop, geometry (every body's screen points), raster (the bodies'
-// lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes).
-// ENGINE fixed|double|float, SCENE kiosk|stress|... or game:A:B (the asteroids scene in play
+// lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes), fill
+// (the filled and textured bodies' fills alone), fillmemset (a memset of as many pixels as the
+// fills cover).
+// ENGINE fixed|double|float, SCENE kiosk|stress|textured|... (filled: textured with colours for
+// textures) or game:A:B (the asteroids scene in play
 // with A asteroids and B bullets in flight; stage collide: the game's collision tests alone,
 // the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
@@ -93,7 +96,9 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     if (verts > 0) params.vertices = verts;    // stress only
     int bullets = 0;
     const bool game = std::strncmp(scene_name, "game:", 5) == 0;
-    if (game ? !game_scene(scene_name, scene, bullets) : !world::builtin_scene(scene_name, params, scene)) {
+    // "filled": the textured scene with each texture replaced by a colour (the fill's spans alone).
+    const bool filled = std::strcmp(scene_name, "filled") == 0;
+    if (game ? !game_scene(scene_name, scene, bullets) : !world::builtin_scene(filled ? "textured" : scene_name, params, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
@@ -103,6 +108,9 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     } else if (K && *K) {
         scene.curvature = std::atof(K);
     }
+    if (filled)
+        for (world::SceneBody& b : scene.bodies)
+            if (b.texture) b.texture = nullptr, b.filled = true, b.fill = {200, 120, 60};
     world::World<T> wd(scene);
     if (game) {  // in play: fire held, turning, until the bullets are all in flight
         wd.press(world::Action::fire);
@@ -152,6 +160,21 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));
         counts.push_back(k);
     }
+    // The fills alone (render/fill.hpp: each body's plan and rows), and the pixels they cover:
+    // drawn once on a cleared canvas and counted, for the memset of as many pixels.
+    auto fills = [&] {
+        scratch.fill.begin_frame(c);
+        for (std::size_t b = 0; b < wd.bodies.size(); ++b)
+            if (render::body_shown(wd.bodies[b], o))
+                if (const render::FillJob* j = scratch.fill.plan(wd, b, m, o, w, h))
+                    render::fill_rows(c, *j, 0, h, scratch.fill.work[0]);
+    };
+    std::fill(back.begin(), back.end(), 0);
+    fills();
+    std::size_t covered = 0;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) covered += c.get_word(x, y) != 0;
+    std::fprintf(stderr, "frame_probe: the fills cover %zu pixels\n", covered);
     uint64_t check = 0;
     for (long i = 0; i < n; ++i) {
         if (stage == "frame") frame();
@@ -171,6 +194,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         } else if (stage == "copy") render::copy_canvas(c, fb);
         else if (stage == "memcpy") std::memcpy(front.data(), back.data(), bytes);
         else if (stage == "collide") check += static_cast<uint64_t>(collide(wd, dt));
+        else if (stage == "fill") fills();
+        else if (stage == "fillmemset") std::memset(back.data(), static_cast<int>(i & 255), covered * static_cast<std::size_t>(f.bytes_per_pixel()));
         else {
             std::fprintf(stderr, "frame_probe: unknown stage '%s'.\n", stage.c_str());
             return 2;
@@ -185,7 +210,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
 
 int main(int argc, char** argv) {
     if (argc < 7) {
-        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy|collide fixed|double|float SCENE|game:A:B WxH rgb565|xrgb8888|rgb888 N [THREADS [K [TESSELLATION [VERTICES]]]]\n");
+        std::fprintf(stderr, "usage: frame_probe frame|step|backdrop|geometry|raster|copy|memcpy|collide|fill|fillmemset fixed|double|float SCENE|game:A:B WxH rgb565|xrgb8888|rgb888 N [THREADS [K [TESSELLATION [VERTICES]]]]\n");
         return 2;
     }
     int w = 0, h = 0;

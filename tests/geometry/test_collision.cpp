@@ -16,6 +16,7 @@
 #include <random>
 #include <vector>
 
+#include "chart_reference.hpp"
 #include "geometry/collision.hpp"
 #include "geometry/reference.hpp"
 
@@ -45,10 +46,8 @@ struct Body {
 
 // ---- the reference ---------------------------------------------------------------------------
 
-double TK(double K, double x) { return geo::ref::S(K, x) / geo::ref::C(K, x); }
-struct P2 {
-    long double u, v;
-};
+using test::P2;
+using test::TK;
 // A point's gnomonic coordinates in the body's frame.
 P2 chart(double K, const Body& b, Polar<double> q) {
     const glm::dvec3 l = geo::ref::Rot(-b.facing) * geo::ref::frame_inverse(K, b.centre) * geo::ref::point(K, q);
@@ -65,15 +64,6 @@ std::vector<P2> outline(double K, const Body& b) {
     std::vector<P2> o;
     for (const Polar<double>& v : b.local) o.push_back(chart_vertex(K, v));
     return o;
-}
-// PNPOLY (W. R. Franklin): the crossing count of a ray to +u.
-bool ref_inside(const std::vector<P2>& poly, P2 p) {
-    bool in = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-        if ((poly[i].v > p.v) != (poly[j].v > p.v) &&
-            p.u < (poly[j].u - poly[i].u) * (p.v - poly[i].v) / (poly[j].v - poly[i].v) + poly[i].u)
-            in = !in;
-    return in;
 }
 long double cross2(P2 o, P2 a, P2 b) { return (a.u - o.u) * (b.v - o.v) - (a.v - o.v) * (b.u - o.u); }
 bool ref_segments_cross(P2 a, P2 b, P2 c, P2 d) {
@@ -161,7 +151,7 @@ TEST(Collision, PointInPolygonMatchesTheReference) {
             for (int k = 0; k < 40; ++k) {
                 const double a = 2 * kPi * u(g), d = 1.4 * size * u(g);
                 const Polar<double> q = from_chart(K, b, {TK(K, d) * std::cos(a), TK(K, d) * std::sin(a)});
-                const bool truth = ref_inside(outline(K, b), chart(K, b, q));
+                const bool truth = test::pnpoly(outline(K, b), chart(K, b, q));
                 if (engine_inside<double>(K, b, q) != truth) {
                     EXPECT_LE(ref_margin(K, b, q), kDoubleTol);
                 }
@@ -202,7 +192,7 @@ TEST(Collision, NearMissesAndGrazingContactsAtEveryEdge) {
                     // delta in the chart; the geodesic margin is measured, and the sign is the truth
                     const Polar<double> q = from_chart(K, b, {mid.u + delta * out.u, mid.v + delta * out.v});
                     const bool truth = delta < 0;
-                    ASSERT_EQ(ref_inside(o, chart(K, b, q)), truth);
+                    ASSERT_EQ(test::pnpoly(o, chart(K, b, q)), truth);
                     const double margin = ref_margin(K, b, q);
                     if (margin > kDoubleTol) {
                         EXPECT_EQ(engine_inside<double>(K, b, q), truth) << r << " " << delta;

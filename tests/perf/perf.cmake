@@ -5,7 +5,7 @@
 find_package(Threads REQUIRED)
 
 if(NONEUCLID_HAVE_BENCHMARK)
-    foreach(b bench_geometry bench_breakdown bench_scaling bench_parallel)
+    foreach(b bench_geometry bench_breakdown bench_scaling bench_parallel bench_fill)
         add_executable(${b} bench/${b}.cpp)
         target_link_libraries(${b} PRIVATE benchmark::benchmark noneuclid_render noneuclid_warnings Threads::Threads)
     endforeach()
@@ -14,6 +14,10 @@ if(NONEUCLID_HAVE_BENCHMARK)
         add_test(NAME bench_geometry_smoke
             COMMAND bench_geometry --benchmark_min_time=0.001 --benchmark_filter=kiosk)
         set_tests_properties(bench_geometry_smoke PROPERTIES LABELS bench)
+        # Filled and textured bodies against a memset (docs/performance.md): runs, and its table.
+        add_test(NAME bench_fill_smoke
+            COMMAND bench_fill --benchmark_min_time=0.001 --benchmark_filter=800x480_rgb565/fixed)
+        set_tests_properties(bench_fill_smoke PROPERTIES LABELS bench PASS_REGULAR_EXPRESSION "\\| 800x480_rgb565 \\| fixed \\| [1-9]")
     endif()
 endif()
 

@@ -74,7 +74,7 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
 }
 
 TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
-    for (const char* s : {"kiosk", "stress", "fig17"})
+    for (const char* s : {"kiosk", "stress", "fig17", "textured"})
         for (bool aa : {false, true}) {
             EXPECT_EQ(allocations_per_frames<fx::fixed>(s, render::PixelFormat::rgb565(), aa, 120), 0) << s;
             EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), aa, 120), 0) << s;
@@ -83,7 +83,7 @@ TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
 }
 
 TEST(NoAllocation, ThreadedFramesAllocateNothing) {
-    for (const char* s : {"kiosk", "stress"})
+    for (const char* s : {"kiosk", "stress", "textured"})
         for (int threads : {2, 3}) {
             EXPECT_EQ(allocations_per_frames<fx::fixed>(s, render::PixelFormat::rgb565(), false, 120, threads), 0) << s;
             EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), true, 60, threads), 0) << s;

@@ -83,6 +83,11 @@ TEST(Parallel, SamePixelsAsOneThreadEveryEngine) {
             threaded_equals_serial<float>("kiosk", 0.3, geo::Projection::lambert_equal_area, aa, threads, f);
             threaded_equals_serial<float>("stress", -0.2, geo::Projection::gnomonic, aa, threads, f);
             threaded_equals_serial<double, true>("kiosk", 0.5, geo::Projection::azimuthal_equidistant, aa, threads, f);
+            // Filled and textured bodies: their fills planned by each body's thread, drawn band by band.
+            threaded_equals_serial<fx::fixed>("textured", -1, geo::Projection::azimuthal_equidistant, aa, threads, f);
+            threaded_equals_serial<fx::fixed>("textured", 1, geo::Projection::azimuthal_equidistant, aa, threads, f);
+            threaded_equals_serial<double>("textured", 0.5, geo::Projection::stereographic, aa, threads, f);
+            threaded_equals_serial<float>("textured", -0.3, geo::Projection::gnomonic, aa, threads, f);
         }
 }
 

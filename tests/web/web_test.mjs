@@ -270,6 +270,23 @@ await check('a pasted scene file runs, and its recording replays on the file', a
   await page.close();
 });
 
+// ---- 3b. filled and textured bodies (the built-in images) -----------------------------------------
+await check('the textured scene at K = -1: the canvas equals render of its recording', async () => {
+  const {page, started} = await openPage('scene=textured&curvature=-1&size=400x300&hud=off');
+  expect(started === true, 'the page did not start');
+  await waitFrames(page, 30);
+  await page.evaluate('window.noneuclid.stop()');
+  const shot = path.join(work, 'textured-page.png'), recording = path.join(work, 'textured.rec');
+  await canvasPng(page, shot);
+  fs.writeFileSync(recording, await page.evaluate('window.noneuclid.recording()'));
+  const replay = path.join(work, 'textured-render.png');
+  render(['--actions', recording, '--out', replay]);
+  const diff = pngDiff(shot, replay);
+  expect(diff.status === 0, `the page differs from render: ${diff.out} (${shot}, ${replay})`);
+  expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+  await page.close();
+});
+
 // ---- 4. bad input: one sentence on the page ---------------------------------------------------
 await check('a bad option, a missing scene file and a bad pasted scene: one sentence each on the page', async () => {
   for (const [query, want] of [['curvature=7', '--curvature'], ['engine=fast', '--engine must be'],
