@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,21 @@
 #include "render/draw_world.hpp"
 
 namespace noneuclid::testing {
+
+// How much of the within-one-pixel checks a run does. Whole: every frame and scene the tests
+// name. Under the sanitizers (NONEUCLID_SANITIZED, set by tests/CMakeLists.txt) a check costs
+// ten to twenty times as much and the whole set takes many minutes, so such builds run every
+// `thin()`-th of the sampled frames and scenes (the first and last kept) unless the environment
+// says NONEUCLID_CURVES=whole. The release build runs them whole (platform/debian/run-tests).
+inline bool curves_whole() {
+#ifdef NONEUCLID_SANITIZED
+    const char* e = std::getenv("NONEUCLID_CURVES");
+    return e != nullptr && std::string(e) == "whole";
+#else
+    return true;
+#endif
+}
+inline int thin() { return curves_whole() ? 1 : 4; }
 
 struct CurveCheck {
     double worst = 0, gap = 0;

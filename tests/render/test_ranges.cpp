@@ -149,6 +149,7 @@ TEST(Ranges, EveryEngineDrawsWithinOnePixelOverTheWholeAcceptedRange) {
     testing::CurveCheck worst[3];
     for (int i = 0; i < 120; ++i) {
         world::Scene s = random_scene(rng);
+        if (i % (2 * testing::thin()) != 0 && i != 119) continue;  // (lighter under the sanitizers: curve_reference.hpp)
         for (const double K : {-1.0, -0.5, 0.0, 0.5, 1.0, s.curvature}) {
             s.curvature = K;
             const std::string what = "scene " + std::to_string(i) + " K " + std::to_string(K) + " R " + std::to_string(s.limit_radius);
