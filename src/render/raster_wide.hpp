@@ -70,5 +70,49 @@ void wide_line(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t wid
     }
 }
 
+// A thick aliased line as its capsule: the pixels whose centre lies within width / 2 of the
+// segment (not only of its line between the end columns), so that the segments of a polyline
+// overlap at every join, however sharp the turn, with no notch. Per column, the capsule (convex)
+// meets the column's centre line in one interval: the union of the strip about the line within
+// the segment's perpendicular slab and the two end discs. In double, in 1/256 px.
+template <class P>
+void capsule_line(P& p, int64_t u0, int64_t v0, int64_t u1, int64_t v1, int32_t width) {
+    const double r = width / 2.0, a = static_cast<double>(u0), b = static_cast<double>(v0);
+    const double du = static_cast<double>(u1 - u0), dv = static_cast<double>(v1 - v0);
+    const double L2 = du * du + dv * dv, half = r * std::sqrt(L2) / std::fabs(du);  // du != 0: u is the major axis
+    const int64_t lo_u = (u0 < u1 ? u0 : u1) - width, hi_u = (u0 < u1 ? u1 : u0) + width;
+    int64_t first = ceil_sub<int64_t>(lo_u - kSub / 2), last = floor_sub<int64_t>(hi_u - kSub / 2);
+    const int64_t along = p.swap ? p.row1 : p.sink.width(), along0 = p.swap ? p.row0 : 0;  // the columns on the canvas
+    if (first < along0) first = along0;
+    if (last > along - 1) last = along - 1;
+    const int64_t rlo = p.swap ? 0 : p.row0, rhi = p.swap ? p.sink.width() : p.row1;
+    for (int64_t u = first; u <= last; ++u) {
+        const double uc = static_cast<double>(u * kSub + kSub / 2), x = uc - a;
+        double lo = INFINITY, hi = -INFINITY;
+        auto disc = [&](double eu, double ev) {
+            const double d = uc - eu;
+            if (std::fabs(d) >= r) return;
+            const double s = std::sqrt(r * r - d * d);
+            lo = std::fmin(lo, ev - s), hi = std::fmax(hi, ev + s);
+        };
+        disc(a, b), disc(static_cast<double>(u1), static_cast<double>(v1));
+        // The strip within width / 2 of the line, cut to the slab 0 <= (P - A).d <= L^2.
+        const double vline = b + x * dv / du;
+        double slo = vline - half, shi = vline + half;
+        if (dv != 0) {
+            const double e0 = b - du * x / dv, e1 = b + (L2 - du * x) / dv;
+            slo = std::fmax(slo, std::fmin(e0, e1)), shi = std::fmin(shi, std::fmax(e0, e1));
+        } else if (x * du < 0 || x * du > L2) {
+            shi = -INFINITY;
+        }
+        if (slo < shi) lo = std::fmin(lo, slo), hi = std::fmax(hi, shi);
+        if (!(lo < hi)) continue;
+        // Rows whose centre r + 1/2 lies in [lo, hi).
+        int64_t row = static_cast<int64_t>(std::ceil((lo - kSub / 2) / kSub));
+        const int64_t end = static_cast<int64_t>(std::ceil((hi - kSub / 2) / kSub));  // exclusive
+        for (row = row > rlo ? row : rlo; row < end && row < rhi; ++row) p.opaque(u, row);
+    }
+}
+
 }  // namespace
 }  // namespace noneuclid::render
