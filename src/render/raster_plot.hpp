@@ -68,21 +68,37 @@ struct CanvasSink {
         const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
         return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
     }
+    // Whether blend_at can blend this canvas's pixels: 32-bit words of byte channels, or RGB565.
+    bool direct() const {
+        if constexpr (Bpp == 4) return fast8888;
+        if constexpr (Bpp == 2) return fast565;
+        return false;
+    }
+    // The pixel at p blended with coverage alpha in 1..254, for a direct() canvas: Canvas::blend's
+    // unpack, mix and pack in integers (RGB565's channels widened with their top bits replicated).
+    [[gnu::always_inline]] void blend_at(uint8_t* p, uint32_t a) const {
+        if constexpr (Bpp == 4) {
+            uint32_t d;
+            std::memcpy(&d, p, 4);
+            const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
+                           b = mix8(color.b, (d >> bs) & 0xFF, a);
+            const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
+            std::memcpy(p, &out, 4);
+        } else if constexpr (Bpp == 2) {
+            uint16_t d;
+            std::memcpy(&d, p, 2);
+            const uint32_t r5 = d >> 11, g6 = (d >> 5) & 0x3F, b5 = d & 0x1F;
+            const uint32_t r = mix8(color.r, r5 << 3 | r5 >> 2, a), g = mix8(color.g, g6 << 2 | g6 >> 4, a),
+                           b = mix8(color.b, b5 << 3 | b5 >> 2, a);
+            const uint16_t out = static_cast<uint16_t>((r >> 3) << 11 | (g >> 2) << 5 | b >> 3);
+            std::memcpy(p, &out, 2);
+        } else {
+            (void)p, (void)a;
+        }
+    }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
-        if constexpr (Bpp == 4) {
-            if (fast8888) {
-                uint8_t* p = at(x, y);
-                uint32_t d;
-                std::memcpy(&d, p, 4);
-                const uint32_t a = static_cast<uint32_t>(alpha);
-                const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
-                               b = mix8(color.b, (d >> bs) & 0xFF, a);
-                const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
-                std::memcpy(p, &out, 4);
-                return;
-            }
-        }
+        if (direct()) return blend_at(at(x, y), static_cast<uint32_t>(alpha));
         c.blend(x, y, color, alpha);
     }
 };
