@@ -59,8 +59,12 @@ bool aa_direct(Plotter<CanvasSink<Bpp>>& p, const Band& s) {
     constexpr int64_t kAhead = 12;
     int64_t v = s.v;
     for (int64_t k = 0; k < s.col.count; ++k, at += major, v += s.dv_col) {
-        if (k + kAhead < s.col.count)
-            __builtin_prefetch(at + kAhead * major + (((v + kAhead * s.dv_col - s.h / 2) >> 32) * minor), 1);
+        if (k + kAhead < s.col.count) {
+            const int64_t ra = (v + kAhead * s.dv_col - s.h / 2) >> 32;  // its first row, and the next
+            uint8_t* ahead = at + kAhead * major + ra * minor;
+            __builtin_prefetch(ahead, 1);
+            if (ra < vhi) __builtin_prefetch(ahead + minor, 1);
+        }
         const int64_t lo = v - s.h / 2, hi = v + s.h / 2;
         const int64_t r = lo >> 32, edge = (r + 1) << 32;
         uint8_t* px = at + r * minor;
