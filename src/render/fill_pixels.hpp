@@ -10,9 +10,11 @@
 // (render/fill_rows.hpp) in its FillJob.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <type_traits>
 #include <vector>
 
@@ -20,6 +22,7 @@
 #include "geometry/geometry.hpp"
 #include "geometry/local_frame.hpp"
 #include "render/fill_rows.hpp"
+#include "render/fill_span.hpp"
 #include "render/screen_points.hpp"
 #include "render/texture.hpp"
 
@@ -244,16 +247,67 @@ template <class T, class F>
     }
 }
 
-// FillJob::span: a run of pixels inside, textured.
+// n pixels from x of a textured run, the i-th at texture coordinates (s + i ds, t + i dt) in
+// 1/65536 texel, each stored by store(x, word). The nearest texel of a piece that stays within
+// the image (as a body's pieces do, unless its texture repeats) is one load.
+template <class Store>
+[[gnu::always_inline]] inline void texture_piece(const TexelMap& tm, int x, int n, int64_t s, int64_t t, int64_t ds, int64_t dt,
+                                                 Store&& store) {
+    const PackedTexture& p = *tm.tex;
+    const int64_t se = s + ds * (n - 1), te = t + dt * (n - 1);
+    if (!tm.bilinear && std::min(s, se) >= 0 && std::max(s, se) < (int64_t{p.width} << 16) && std::min(t, te) >= 0 &&
+        std::max(t, te) < (int64_t{p.height} << 16)) {
+        const uint32_t* words = p.words.data();
+        const int64_t width = p.width;
+        for (int i = 0; i < n; ++i, s += ds, t += dt) store(x + i, words[(t >> 16) * width + (s >> 16)]);
+        return;
+    }
+    for (int i = 0; i < n; ++i, s += ds, t += dt) store(x + i, tm.word(s >> 8, t >> 8));
+}
+
+// FillJob::span: a run of pixels inside, textured: its texture coordinates sampled exactly and
+// interpolated between (render/fill_span.hpp), each texel stored in the canvas's own format.
 template <class T>
 void span(const void* body, const Canvas& c, int y, int x0, int x1) {
     const Body<T>& b = *static_cast<const Body<T>*>(body);
-    const PixelWriter out{c};
-    for_pixels(b, y, x0, x1, [&](int x, bool ok, const geo::Vec3<T>& L) {
-        if (!ok) return;
-        int64_t s8, t8;
-        texcoord(b.frame, L, s8, t8);
-        out.put(x, y, b.texels.word(s8, t8));
+    auto paint = [&](auto&& exact) {
+        uint8_t* row = c.row(y);
+        const TexelMap& tm = b.texels;
+        switch (c.format().bits_per_pixel) {
+            case 16:
+                return sampled_span(x0, x1, exact, [&](int x, int n, int64_t s, int64_t t, int64_t ds, int64_t dt) {
+                    texture_piece(tm, x, n, s, t, ds, dt, [&](int px, uint32_t w) {
+                        const uint16_t h = static_cast<uint16_t>(w);
+                        std::memcpy(row + 2 * px, &h, 2);
+                    });
+                });
+            case 32:
+                return sampled_span(x0, x1, exact, [&](int x, int n, int64_t s, int64_t t, int64_t ds, int64_t dt) {
+                    texture_piece(tm, x, n, s, t, ds, dt, [&](int px, uint32_t w) { std::memcpy(row + 4 * px, &w, 4); });
+                });
+            default:
+                return sampled_span(x0, x1, exact, [&](int x, int n, int64_t s, int64_t t, int64_t ds, int64_t dt) {
+                    texture_piece(tm, x, n, s, t, ds, dt, [&](int px, uint32_t w) { c.set_word(px, y, w); });
+                });
+        }
+    };
+    if constexpr (std::is_same_v<T, fixed>) {
+        if (b.use_fast) {
+            FastMap map = b.fast;
+            map.row(y);
+            return paint([&](int x, Texcoord& t) {
+                geo::Vec3<fixed> L;
+                if (!map.local(x, L)) return false;
+                texcoord(b.frame, L, t.s, t.t);
+                return true;
+            });
+        }
+    }
+    paint([&](int x, Texcoord& t) {
+        geo::Vec3<T> L;
+        if (!local_at(b.frame, x, y, L)) return false;
+        texcoord(b.frame, L, t.s, t.t);
+        return true;
     });
 }
 // FillJob::test: each pixel tested, then painted (anti-aliased: with its coverage).

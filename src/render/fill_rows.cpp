@@ -19,13 +19,37 @@ int64_t x_at(SubPoint a, SubPoint b, int64_t y) {
     return a.x + (y - a.y) * (int64_t{b.x} - a.x) / (int64_t{b.y} - a.y);
 }
 
-// The row's crossings and zones (and, anti-aliased, its near segments) into w.
+// The polyline's segments (i to i + 1) in the order of their tops, in w.order, for the rows to
+// take up in turn (w.active: the segments that reach the current row's strip).
+void sort_segments(const FillJob& j, RowWork& w) {
+    w.order.clear(), w.active.clear();
+    for (std::size_t i = 0; i + 1 < j.count; ++i)
+        if (j.points[i].y != kBreak.y && j.points[i + 1].y != kBreak.y) w.order.push_back(static_cast<uint32_t>(i));
+    auto top = [&](uint32_t i) { return std::min(j.points[i].y, j.points[i + 1].y); };
+    std::sort(w.order.begin(), w.order.end(), [&](uint32_t p, uint32_t q) { return top(p) < top(q); });
+}
+// The segments within the strip [yc - D, yc + D] into w.active: those whose tops it has reached
+// added, those wholly above it dropped (rows come in increasing y).
+void activate(const FillJob& j, int64_t yc, RowWork& w, std::size_t& taken) {
+    const int64_t D = j.zone;
+    while (taken < w.order.size()) {
+        const uint32_t i = w.order[taken];
+        if (std::min(j.points[i].y, j.points[i + 1].y) > yc + D) break;
+        w.active.push_back(i), ++taken;
+    }
+    std::size_t kept = 0;
+    for (uint32_t i : w.active)
+        if (std::max(j.points[i].y, j.points[i + 1].y) >= yc - D) w.active[kept++] = i;
+    w.active.resize(kept);
+}
+
+// The row's crossings and zones (and, anti-aliased, its near segments) into w, from the
+// segments w.active holds.
 void scan_row(const FillJob& j, int64_t yc, RowWork& w) {
     const int64_t D = j.zone;
     w.crossings.clear(), w.zones.clear(), w.near.clear();
-    for (std::size_t i = 0; i + 1 < j.count; ++i) {
+    for (uint32_t i : w.active) {
         const SubPoint a = j.points[i], b = j.points[i + 1];
-        if (b.y == kBreak.y || a.y == kBreak.y) continue;
         const int64_t lo = std::min(a.y, b.y), hi = std::max(a.y, b.y);
         if (hi < yc - D || lo > yc + D) continue;
         if ((a.y <= yc) != (b.y <= yc)) w.crossings.push_back(static_cast<int32_t>(x_at(a, b, yc)));
@@ -69,6 +93,8 @@ int64_t last_pixel(int64_t to) { return (to - kSub / 2) >> kSubBits; }
 }  // namespace
 
 void RowWork::reserve(std::size_t segments) {
+    order.reserve(segments);
+    active.reserve(segments);
     crossings.reserve(segments + 2);
     zones.reserve(segments + 2);
     near.reserve(segments);
@@ -99,6 +125,8 @@ void fill_rows(const Canvas& c, const FillJob& j, int y0, int y1, RowWork& w) {
     if (!j.on) return;
     y0 = std::max({y0, j.top, 0}), y1 = std::min({y1, j.bottom, c.height()});
     const PixelWriter out{c};
+    std::size_t taken = 0;  // segments of w.order taken up
+    if (!j.brute) sort_segments(j, w);
     for (int y = y0; y < y1; ++y) {
         // The row's pixels whose centres lie within the shown disc: [lo, hi).
         const int64_t yc = int64_t{y} * kSub + kSub / 2, dc = yc - j.clip_cy;
@@ -111,6 +139,7 @@ void fill_rows(const Canvas& c, const FillJob& j, int y0, int y1, RowWork& w) {
             if (x0 < x1) j.test(j.body, c, y, x0, x1, nullptr);
             continue;
         }
+        activate(j, yc, w, taken);
         scan_row(j, yc, w);
         const RowCover cover{w.near.data(), w.near.size(), j.rim, j.rim_cx, j.rim_cy, j.rim_r, y};
         std::size_t crossed = 0;  // crossings left of the current place

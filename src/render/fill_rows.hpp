@@ -68,6 +68,7 @@ struct FillJob {
 // A thread's room for one row of any job it is given: sized by reserve for the longest
 // polyline (and the rim); a frame allocates nothing.
 struct RowWork {
+    std::vector<uint32_t> order, active;  // the polyline's segments by their tops; those near the row
     std::vector<int32_t> crossings;
     struct Zone {
         int64_t from, to;  // 1/256 px

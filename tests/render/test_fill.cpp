@@ -62,7 +62,7 @@ struct Place {
     double r, theta_deg, facing_deg;
 };
 world::Scene scene_of(const Shape& s, Place p, double K, std::shared_ptr<const world::Image> texture = nullptr,
-                      bool bilinear = false) {
+                      bool bilinear = false, double texture_scale = 1) {
     world::Scene sc;
     sc.curvature = K;
     world::SceneBody b;
@@ -70,7 +70,7 @@ world::Scene scene_of(const Shape& s, Place p, double K, std::shared_ptr<const w
     for (const Polar<double>& v : s.local) b.vertices.push_back({v.r, v.theta * 180 / kPi});
     b.r = p.r, b.theta_deg = p.theta_deg, b.facing_deg = p.facing_deg;
     b.filled = true, b.fill = {255, 255, 255};
-    b.texture = std::move(texture), b.texture_bilinear = bilinear;
+    b.texture = std::move(texture), b.texture_bilinear = bilinear, b.texture_scale = texture_scale;
     sc.bodies.push_back(b);
     return sc;
 }
@@ -291,7 +291,8 @@ struct TexelCheck {
 };
 // Every pixel drawn in the texture's colours holds the texel at its reference coordinates.
 template <class T>
-TexelCheck check_texels(world::World<T>& w, render::DrawScratch<T>& s, const Shape& shape, Place p, double K, bool bilinear) {
+TexelCheck check_texels(world::World<T>& w, render::DrawScratch<T>& s, const Shape& shape, Place p, double K, bool bilinear,
+                        double texture_scale = 1) {
     Render<T> out;
     fill_once(w, s, out, false);
     const Reference ref(K, shape, p, kW / 2.0 / static_cast<double>(w.R));
@@ -303,7 +304,7 @@ TexelCheck check_texels(world::World<T>& w, render::DrawScratch<T>& s, const Sha
             Polar<double> q;
             if (!ref.point(x, y, q)) continue;
             double st, tt;
-            ref.texcoord(q, 64, 64, 1, st, tt);
+            ref.texcoord(q, 64, 64, texture_scale, st, tt);
             ++c.pixels;
             if (!bilinear) {
                 const int gap = std::max(texel_gap(v.r / 4, static_cast<int>(std::floor(st))),
@@ -345,6 +346,28 @@ TEST(FillTexture, FixedReadsTheSameTexelWithinOne) { texels_everywhere<fixed>(fa
 TEST(FillTexture, BilinearBlendsAtThoseCoordinates) {
     texels_everywhere<double>(true);
     texels_everywhere<fixed>(true);
+}
+
+// The image repeated eight times across a body (texture_scale 1/8: up to 7 texels a pixel), so
+// that a texture coordinate interpolated along a run (render/fill_span.hpp) shows its error
+// magnified: every pixel still reads the reference's texel or the next, at every K and place
+// (toward the limit circle and the sphere's antipode, where the map bends hardest).
+template <class T>
+void dense_texels_everywhere() {
+    for (const Shape& shape : {star_shape(), c_shape()})
+        for (double K : kCurvatures)
+            for (Place p : kPlaces) {
+                world::World<T> w(scene_of(shape, p, K, coordinate_image(), false, 0.125));
+                render::DrawScratch<T> s;
+                s.prepare(w);
+                const TexelCheck c = check_texels(w, s, shape, p, K, false, 0.125);
+                EXPECT_GT(c.pixels, 300);
+                EXPECT_LE(c.worst, 1) << shape.name << " K " << K << " r " << p.r;
+            }
+}
+TEST(FillTexture, DenseTexturesReadWithinOneTexelWhereTheMapBends) {
+    dense_texels_everywhere<double>();
+    dense_texels_everywhere<fixed>();
 }
 
 // The texture stays on the body while K changes under it (the curvature keys: the same world,

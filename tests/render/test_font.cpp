@@ -1,91 +1,23 @@
 // Fonts: the built-in font's glyphs, PSF1/PSF2 parsing against the bytes the test builds,
 // errors as one sentence, text drawn with canary borders and odd strides against a per-pixel
-// reference, and (where noneuclid_desktop is built) console font files and the HUD font choice.
+// reference. Console font files and the HUD font choice: test_console_font.cpp.
 #include <gtest/gtest.h>
 
 #include <climits>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
-#include <random>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "psf_bytes.hpp"
 #include "render/canvas.hpp"
 #include "render/font.hpp"
 
-#if NONEUCLID_HAVE_DESKTOP
-#include <zlib.h>
-
-#include <cstdlib>
-
-#include "desktop/console_font.hpp"
-#endif
-
 using namespace noneuclid::render;
+using namespace noneuclid::test;
 
 namespace {
-
-// ---------------------------------------------------------------------------------------------
-// PSF files built byte by byte
-// ---------------------------------------------------------------------------------------------
-
-// The content of byte `k` of glyph `g`: varied, so that glyphs and rows differ.
-uint8_t pattern(int g, int k) {
-    return static_cast<uint8_t>((g * 37 + k * 11 + 5) & 0xFF);
-}
-
-std::vector<uint8_t> make_psf1(int height, uint8_t mode, int glyph_bytes = -1) {
-    const int count = (mode & 1) ? 512 : 256;
-    std::vector<uint8_t> v = {0x36, 0x04, mode, static_cast<uint8_t>(height)};
-    const int n = glyph_bytes >= 0 ? glyph_bytes : count * height;
-    for (int i = 0; i < n; ++i)
-        v.push_back(pattern(i / height, i % height));
-    return v;
-}
-
-void put32(std::vector<uint8_t>& v, std::size_t at, uint32_t x) {
-    for (int i = 0; i < 4; ++i)
-        v[at + std::size_t(i)] = static_cast<uint8_t>(x >> (8 * i));
-}
-
-struct Psf2 {
-    uint32_t width = 10, height = 12, count = 100, headersize = 32;
-    uint32_t charsize = 0;  // 0: height * bytes per row
-    long glyph_bytes = -1;  // -1: count * charsize
-};
-
-std::vector<uint8_t> make_psf2(Psf2 p) {
-    const uint32_t charsize = p.charsize ? p.charsize : p.height * ((p.width + 7) / 8);
-    std::vector<uint8_t> v(p.headersize >= 32 ? p.headersize : 32, 0xEE);
-    v[0] = 0x72, v[1] = 0xb5, v[2] = 0x4a, v[3] = 0x86;
-    put32(v, 4, 0);
-    put32(v, 8, p.headersize);
-    put32(v, 12, 0);
-    put32(v, 16, p.count);
-    put32(v, 20, charsize);
-    put32(v, 24, p.height);
-    put32(v, 28, p.width);
-    const long n = p.glyph_bytes >= 0 ? p.glyph_bytes : long(p.count) * long(charsize);
-    for (long i = 0; i < n; ++i)
-        v.push_back(pattern(int(i / charsize), int(i % charsize)));
-    return v;
-}
-
-// Pixel (x, y) of glyph g in a font built by make_psf1/make_psf2, from the pattern alone.
-bool pattern_pixel(int g, int x, int y, int bytes_per_row) {
-    return (pattern(g, y * bytes_per_row + x / 8) >> (7 - x % 8)) & 1;
-}
-
-void expect_font_matches_pattern(const Font& f) {
-    for (int g = 0; g < f.glyph_count; ++g)
-        for (int y = 0; y < f.height; ++y)
-            for (int x = 0; x < f.width; ++x)
-                ASSERT_EQ(f.pixel(g, x, y), pattern_pixel(g, x, y, f.bytes_per_row))
-                    << "glyph " << g << " pixel " << x << "," << y;
-}
 
 std::string parse_error(const std::vector<uint8_t>& bytes) {
     Font f;
@@ -481,180 +413,3 @@ TEST(FontDraw, EmptyCanvasAndEmptyFont) {
     EXPECT_EQ(draw_text(g.canvas(), Font{}, 0, 0, "abc", kColor), 0);
     EXPECT_EQ(g.bytes, g.original);
 }
-
-// ---------------------------------------------------------------------------------------------
-// Console font files and the HUD font (platform/desktop)
-// ---------------------------------------------------------------------------------------------
-#if NONEUCLID_HAVE_DESKTOP
-namespace {
-
-namespace fs = std::filesystem;
-using noneuclid::platform::default_hud_font;
-using noneuclid::platform::load_console_font;
-using noneuclid::platform::LoadedFont;
-
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path()
-               / ("noneuclid-font-" + std::string(info->name()) + "-"
-                  + std::to_string(std::random_device{}()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
-
-void write_gz(const std::string& path, const std::vector<uint8_t>& bytes) {
-    gzFile f = gzopen(path.c_str(), "wb");
-    ASSERT_NE(f, nullptr) << path;
-    ASSERT_EQ(gzwrite(f, bytes.data(), unsigned(bytes.size())), int(bytes.size()));
-    ASSERT_EQ(gzclose(f), Z_OK);
-}
-
-void write_plain(const std::string& path, const std::vector<uint8_t>& bytes) {
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    ASSERT_TRUE(out.good()) << path;
-}
-
-// The loaded font's pixels are the file's, read through its own bytes.
-void expect_loaded(const LoadedFont& lf, int width, int height, int count) {
-    EXPECT_EQ(lf.font.width, width);
-    EXPECT_EQ(lf.font.height, height);
-    EXPECT_EQ(lf.font.glyph_count, count);
-    ASSERT_FALSE(lf.bytes.empty());
-    EXPECT_GE(lf.font.glyphs, lf.bytes.data());
-    EXPECT_LE(lf.font.glyphs + std::size_t(count * height * lf.font.bytes_per_row),
-              lf.bytes.data() + lf.bytes.size());
-    expect_font_matches_pattern(lf.font);
-}
-
-}  // namespace
-
-TEST(FontConsole, LoadsGzipAndPlainFiles) {
-    TempDir dir;
-    Psf2 p;
-    write_gz(dir.file("ten.psf.gz"), make_psf2(p));
-    write_plain(dir.file("sixteen.psf"), make_psf1(16, 1));
-    LoadedFont a, b;
-    std::string error;
-    ASSERT_TRUE(load_console_font(dir.file("ten.psf.gz"), a, error)) << error;
-    expect_loaded(a, 10, 12, 100);
-    EXPECT_EQ(a.source, dir.file("ten.psf.gz"));
-    ASSERT_TRUE(load_console_font(dir.file("sixteen.psf"), b, error)) << error;
-    expect_loaded(b, 8, 16, 512);
-
-    // Moving keeps font.glyphs pointing into the (moved) bytes.
-    LoadedFont moved = std::move(a);
-    expect_loaded(moved, 10, 12, 100);
-    LoadedFont assigned;
-    assigned = std::move(moved);
-    expect_loaded(assigned, 10, 12, 100);
-}
-
-TEST(FontConsole, ErrorsNameTheFile) {
-    TempDir dir;
-    LoadedFont f;
-    std::string error;
-    const std::string missing = dir.file("no-such-font.psf.gz");
-    EXPECT_FALSE(load_console_font(missing, f, error));
-    EXPECT_EQ(error, missing + ": cannot open the font file (No such file or directory)");
-
-    write_gz(dir.file("text.psf.gz"), {'h', 'e', 'l', 'l', 'o', '\n'});
-    EXPECT_FALSE(load_console_font(dir.file("text.psf.gz"), f, error));
-    EXPECT_EQ(error, dir.file("text.psf.gz") + ": not a PSF font (bad magic number)");
-
-    write_plain(dir.file("short.psf"), make_psf1(16, 0, 100));
-    EXPECT_FALSE(load_console_font(dir.file("short.psf"), f, error));
-    EXPECT_EQ(error, dir.file("short.psf")
-                         + ": the PSF font is truncated: 4096 bytes of glyphs expected, 100 found");
-
-    // A gzip stream cut short.
-    write_gz(dir.file("cut.psf.gz"), make_psf1(16, 0));
-    {
-        std::ifstream in(dir.file("cut.psf.gz"), std::ios::binary);
-        std::vector<char> all((std::istreambuf_iterator<char>(in)),
-                              std::istreambuf_iterator<char>());
-        all.resize(all.size() / 2);
-        std::ofstream out(dir.file("cut.psf.gz"), std::ios::binary | std::ios::trunc);
-        out.write(all.data(), std::streamsize(all.size()));
-    }
-    EXPECT_FALSE(load_console_font(dir.file("cut.psf.gz"), f, error));
-    EXPECT_EQ(error.rfind(dir.file("cut.psf.gz") + ": cannot read the font file (", 0), 0u)
-        << error;
-
-    EXPECT_FALSE(load_console_font(dir.path.string(), f, error));  // a directory
-    EXPECT_EQ(error.rfind(dir.path.string() + ": cannot read the font file (", 0), 0u) << error;
-
-    EXPECT_EQ(error.find('\n'), std::string::npos);
-    EXPECT_TRUE(f.bytes.empty());
-    EXPECT_EQ(f.font.glyphs, nullptr);
-}
-
-TEST(FontConsole, HudFontChoice) {
-    TempDir dir, empty;
-    const std::string env_font = dir.file("mine.psf");
-    write_plain(env_font, make_psf1(14, 0));
-    std::string note;
-
-    // $NONEUCLID_FONT first.
-    ASSERT_EQ(setenv("NONEUCLID_FONT", env_font.c_str(), 1), 0);
-    LoadedFont f = default_hud_font(&note, empty.path.string());
-    EXPECT_EQ(f.source, env_font);
-    EXPECT_EQ(f.font.height, 14);
-    EXPECT_EQ(note, "HUD font: " + env_font + " (8x14), chosen by NONEUCLID_FONT.");
-
-    // An unusable $NONEUCLID_FONT and no console fonts: the built-in font, and the note says why.
-    ASSERT_EQ(setenv("NONEUCLID_FONT", dir.file("absent.psf").c_str(), 1), 0);
-    f = default_hud_font(&note, empty.path.string());
-    EXPECT_EQ(f.source, "built-in 6x8");
-    EXPECT_EQ(f.font.glyphs, builtin_font().glyphs);
-    EXPECT_EQ(note, "HUD font: the built-in 6x8 font, as no usable console font is in " +
-                        empty.path.string() +
-                        " (Debian's console-setup-linux provides them), since NONEUCLID_FONT is "
-                        "unusable (" + dir.file("absent.psf") +
-                        ": cannot open the font file (No such file or directory)).");
-    ASSERT_EQ(unsetenv("NONEUCLID_FONT"), 0);
-
-    // Any font in the directory, in name order, skipping unusable ones.
-    TempDir fonts;
-    write_gz(fonts.file("Aaa-broken.psf.gz"), {1, 2, 3});
-    write_gz(fonts.file("Bbb-Small12.psf.gz"), make_psf1(12, 0));
-    write_gz(fonts.file("Ccc-Large20.psf.gz"), make_psf1(20, 0));
-    write_plain(fonts.file("Abc-not-gz.psf"), make_psf1(10, 0));
-    f = default_hud_font(&note, fonts.path.string());
-    EXPECT_EQ(f.source, fonts.file("Bbb-Small12.psf.gz"));
-    EXPECT_EQ(note, "HUD font: " + fonts.file("Bbb-Small12.psf.gz")
-                        + " (8x12), the first usable font in " + fonts.path.string()
-                        + " (none of the preferred Terminus or Fixed 16-pixel fonts is there).");
-    expect_loaded(f, 8, 12, 256);
-
-    // A preferred font wins, in the documented order.
-    write_gz(fonts.file("Uni2-Fixed16.psf.gz"), make_psf1(16, 1));
-    f = default_hud_font(&note, fonts.path.string());
-    EXPECT_EQ(f.source, fonts.file("Uni2-Fixed16.psf.gz"));
-    write_gz(fonts.file("Uni2-Terminus16.psf.gz"), make_psf1(16, 0));
-    f = default_hud_font(nullptr, fonts.path.string());
-    EXPECT_EQ(f.source, fonts.file("Uni2-Terminus16.psf.gz"));
-    write_gz(fonts.file("Lat15-Terminus16.psf.gz"), make_psf2({}));
-    f = default_hud_font(&note, fonts.path.string());
-    EXPECT_EQ(f.source, fonts.file("Lat15-Terminus16.psf.gz"));
-    EXPECT_EQ(note, "HUD font: " + fonts.file("Lat15-Terminus16.psf.gz")
-                        + " (10x12), the preferred console font.");
-    expect_loaded(f, 10, 12, 100);
-
-    // A missing directory is like an empty one.
-    f = default_hud_font(&note, fonts.file("no-such-dir"));
-    EXPECT_EQ(f.source, "built-in 6x8");
-}
-#else
-TEST(FontConsole, NotBuilt) {
-    GTEST_SKIP() << "noneuclid_desktop is not built here (no zlib for the target), so console font "
-                    "files are not tested";
-}
-#endif

@@ -10,7 +10,8 @@
 //     (the comparison can fail). In the game (the asteroids scene) Space starts it and the
 //     fire button, held, fires: the same holds, and without the button's shots it differs;
 //  3. runs a pasted scene file, whose recording replays on the file, pixel for pixel;
-//  4. says one sentence for a bad option, a scene file it cannot load and a bad pasted one.
+//  4. says one sentence for a bad option, a scene file it cannot load, a bad pasted one and a
+//     texture file (a page reads none).
 // Every page that should work must also leave its console without an error.
 //   node web_test.mjs --noneuclid N --png-diff P --page DIR --work DIR [--chromium PATH]
 import {execFileSync} from 'node:child_process';
@@ -288,7 +289,7 @@ await check('the textured scene at K = -1: the canvas equals render of its recor
 });
 
 // ---- 4. bad input: one sentence on the page ---------------------------------------------------
-await check('a bad option, a missing scene file and a bad pasted scene: one sentence each on the page', async () => {
+await check('a bad option, a missing scene file, a bad pasted scene and a texture file: one sentence each on the page', async () => {
   for (const [query, want] of [['curvature=7', '--curvature'], ['engine=fast', '--engine must be'],
                                ['scene=lesson.toml', 'lesson.toml']]) {
     const {page, started} = await openPage(query);
@@ -304,6 +305,15 @@ await check('a bad option, a missing scene file and a bad pasted scene: one sent
   })()`);
   const message = (await page.evaluate('window.noneuclid.state()')).message;
   expect(/pasted\.toml:3:\d+: /.test(message), `a bad pasted scene: the message '${message}' names no line and column`);
+  // A texture file: the page reads none, and says so and what to do (not how to rebuild it).
+  await page.evaluate(`(() => {
+    document.getElementById('scene-text').value = '[[body]]\\nclosed = true\\n' +
+      'vertices = [[0.3, 0.0], [0.3, 120.0], [0.3, 240.0]]\\ntexture = "rock.png"\\n';
+    document.getElementById('run-text').click();
+  })()`);
+  const textured = (await page.evaluate('window.noneuclid.state()')).message;
+  expect(/pasted\.toml:4:\d+: .*reads no image files/.test(textured) && !textured.includes('rebuild'),
+         `a pasted scene with a texture file: the message '${textured}' does not say the page reads no image files`);
   await page.close();
 });
 
