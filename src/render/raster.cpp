@@ -95,6 +95,7 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         const int32_t m = row_margin(style);
         cut = (Y0 < Y1 ? Y0 : Y1) - m < int64_t{p.row0} * kSub || (Y0 < Y1 ? Y1 : Y0) + m >= int64_t{p.row1} * kSub;
     }
+    if (!thin_line && !style.antialias) return capsule_line(p, u0, v0, u1, v1, style.width);
     if (!thin_line) return wide_line(p, u0, v0, u1, v1, style.width, style.antialias, cut);
     if constexpr (to_canvas) {
         constexpr int64_t lim = int64_t{1} << 21;  // thin32's bound

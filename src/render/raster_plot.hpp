@@ -40,11 +40,34 @@ struct CanvasSink {
     std::ptrdiff_t stride;
     bool fast565, fast8888;
     uint32_t rs, gs, bs, fill;  // fast8888: the channels' shifts, and the bits pack() sets besides
+    uint32_t channels;          // fast8888: the channels' bits
+    uint64_t lanes;             // fast8888: the colour's word, a byte to each 16-bit lane (spread)
     CanvasSink(const Canvas& canvas, Rgb col)
         : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
           fast565(canvas.format().is_rgb565()), fast8888(canvas.format().byte_channels()),
           rs(canvas.format().red.offset), gs(canvas.format().green.offset), bs(canvas.format().blue.offset),
-          fill(canvas.format().opaque_bits()) {}
+          fill(canvas.format().opaque_bits()), channels(0xFFu << rs | 0xFFu << gs | 0xFFu << bs), lanes(spread(word)) {}
+    // The four bytes of a word, each in a 16-bit lane of its own, and back.
+    static uint64_t spread(uint32_t w) {
+        uint64_t x = w;
+        x = (x | x << 16) & 0x0000FFFF0000FFFFull;
+        return (x | x << 8) & 0x00FF00FF00FF00FFull;
+    }
+    static uint32_t gather(uint64_t x) {
+        x = (x | x >> 8) & 0x0000FFFF0000FFFFull;
+        return static_cast<uint32_t>(x | x >> 16);
+    }
+    // mix8 on the four lanes at once: dst + (src - dst) * a / 255 rounded half away from zero,
+    // never beyond src. No lane carries into the next: 256 + s - d and 256 + d - s lie in
+    // [1, 511], |s - d| * a + 128 plus its top byte within 65407.
+    static uint64_t mix_lanes(uint64_t S, uint64_t D, uint32_t a) {
+        constexpr uint64_t H = 0x0100010001000100ull, L1 = 0x0001000100010001ull, LFF = 0x00FF00FF00FF00FFull;
+        const uint64_t X = (S | H) - D, Y = (D | H) - S;  // 256 + s - d, 256 + d - s
+        const uint64_t up = ((X >> 8) & L1) * 0xFFFF;     // lanes where s >= d
+        const uint64_t t = (((X & up) | (Y & ~up)) - H) * a + 0x0080008000800080ull;  // |s - d| a + 128
+        const uint64_t q = ((t + ((t >> 8) & LFF)) >> 8) & LFF;                         // div255_rounded
+        return (((D + q) & up) | (((D | H) - q) & ~up)) & LFF;
+    }
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
@@ -68,21 +91,35 @@ struct CanvasSink {
         const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
         return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
     }
+    // Whether blend_at can blend this canvas's pixels: 32-bit words of byte channels, or RGB565.
+    bool direct() const {
+        if constexpr (Bpp == 4) return fast8888;
+        if constexpr (Bpp == 2) return fast565;
+        return false;
+    }
+    // The pixel at p blended with coverage alpha in 1..254, for a direct() canvas: Canvas::blend's
+    // unpack, mix and pack in integers (RGB565's channels widened with their top bits replicated).
+    [[gnu::always_inline]] void blend_at(uint8_t* p, uint32_t a) const {
+        if constexpr (Bpp == 4) {
+            uint32_t d;
+            std::memcpy(&d, p, 4);
+            const uint32_t out = fill | (gather(mix_lanes(lanes, spread(d), a)) & channels);  // pack({r, g, b})
+            std::memcpy(p, &out, 4);
+        } else if constexpr (Bpp == 2) {
+            uint16_t d;
+            std::memcpy(&d, p, 2);
+            const uint32_t r5 = d >> 11, g6 = (d >> 5) & 0x3F, b5 = d & 0x1F;
+            const uint32_t r = mix8(color.r, r5 << 3 | r5 >> 2, a), g = mix8(color.g, g6 << 2 | g6 >> 4, a),
+                           b = mix8(color.b, b5 << 3 | b5 >> 2, a);
+            const uint16_t out = static_cast<uint16_t>((r >> 3) << 11 | (g >> 2) << 5 | b >> 3);
+            std::memcpy(p, &out, 2);
+        } else {
+            (void)p, (void)a;
+        }
+    }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
-        if constexpr (Bpp == 4) {
-            if (fast8888) {
-                uint8_t* p = at(x, y);
-                uint32_t d;
-                std::memcpy(&d, p, 4);
-                const uint32_t a = static_cast<uint32_t>(alpha);
-                const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
-                               b = mix8(color.b, (d >> bs) & 0xFF, a);
-                const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
-                std::memcpy(p, &out, 4);
-                return;
-            }
-        }
+        if (direct()) return blend_at(at(x, y), static_cast<uint32_t>(alpha));
         c.blend(x, y, color, alpha);
     }
 };

@@ -250,7 +250,7 @@ public:
         std::printf("%-14s %10s %12s %12s %12s %14s\n", "lines", "ours", "cairo", "cairo/ours", "cairo 1path",
                     "cairo1p/ours");
         row("aliased", "ours_aliased", "cairo_aliased", "cairo_aliased_path", 10);
-        row("anti-aliased", "ours_antialiased", "cairo_antialiased", "cairo_antialiased_path", 4);
+        row("anti-aliased", "ours_antialiased", "cairo_antialiased", "cairo_antialiased_path", 10);
     }
 
 private:
