@@ -111,17 +111,32 @@ struct FixedFarSide {
         constexpr int64_t lim = int64_t{1} << 6;  // 2^-10 in Q16
         return K > 0 && w < 0 && x < lim && x > -lim && y < lim && y > -lim && x * x + y * y < (int64_t{1} << 12);
     }
-    // False outside the domain: K <= 0, w >= -1/2, or within 2^-10 of the antipode.
-    bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const {
+    // The unit vector along (dx, dy) (any scale, not both 0) in Q30: (dx, dy) scaled to 30 bits
+    // (the table seed's square root is good to 2^-17 of its value only for such large ones),
+    // then divided by its length.
+    static void direction(int64_t dx, int64_t dy, int64_t& ux, int64_t& uy) {
+        const uint64_t m = static_cast<uint64_t>(dx < 0 ? -dx : dx) | static_cast<uint64_t>(dy < 0 ? -dy : dy);
+        const int k = 34 - std::countl_zero(m);  // the larger of |dx|, |dy| in [2^29, 2^30) once shifted
+        const int64_t hx = k >= 0 ? dx >> k : dx * (int64_t{1} << -k), hy = k >= 0 ? dy >> k : dy * (int64_t{1} << -k);
+        const uint32_t h = fx::detail::sqrt_seed(static_cast<uint64_t>(hx * hx + hy * hy));
+        int sh = 0;
+        const uint64_t r_h = reciprocal(h, sh);
+        const int64_t inv = static_cast<int64_t>(r_h << sh);  // 2^62 / h
+        ux = (hx * inv) >> 32, uy = (hy * inv) >> 32;
+    }
+    // False outside the domain: K <= 0, w >= -1/2, or within 2^-10 of the antipode. (dx, dy):
+    // (x, y) before rounding to Q16, at any scale, when the caller has it: near the antipode
+    // (x, y) is small and its rounding alone would turn the point's direction by up to
+    // 2^-17 / S (a pixel at S = 2^-8 on a 1080-px disc); the sums it was rounded from are exact
+    // to 2^-30.
+    bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const { return point(w, x, y, p, x, y); }
+    bool point(int64_t w, int64_t x, int64_t y, SubPoint& p, int64_t dx, int64_t dy) const {
         if (K <= 0 || w >= -(int64_t{1} << 15)) return false;
         constexpr int64_t lim = int64_t{1} << 20;  // |x|, |y| < 16 (S <= 1 / sqrt K, K >= 1/256)
         if (x >= lim || x <= -lim || y >= lim || y <= -lim || w < -(int64_t{1} << 16)) return false;
         const uint64_t s2 = static_cast<uint64_t>(x * x + y * y);  // Q32
         if (s2 < (uint64_t{1} << 12)) return false;                 // S < 2^-10
         const uint32_t s = fx::detail::sqrt_seed(s2 << 16);          // S in Q24, < 2^28
-        int sh = 0;
-        const uint64_t r_s = reciprocal(s, sh);                       // (sh set first: its own statement)
-        const uint64_t inv_s = r_s << sh >> 8;                        // 2^54 / s: 1/S in Q30
         // t = S / (1 - w) in Q24: 1 - w in (3/2, 2] is (1 - w) 2^16 in Q16; 2^62 / (that 2^15)
         // is 1 / (1 - w) in Q31.
         const uint32_t d = static_cast<uint32_t>(std::min<int64_t>(((int64_t{1} << 16) - w) << 15, 0xFFFFFFFF));
@@ -130,7 +145,8 @@ struct FixedFarSide {
         const fx::fixed u = fx::fixed::from_raw(static_cast<int32_t>((int64_t{K} * t.raw() * t.raw()) >> 32));
         const int64_t r = antipode - 2 * int64_t{fx::mul_ATf(t, u).raw()};  // Q16
         const int64_t R = (r * scale) >> 24;                                 // px, Q8
-        const int64_t ux = (x * static_cast<int64_t>(inv_s)) >> 16, uy = (y * static_cast<int64_t>(inv_s)) >> 16;  // Q30
+        int64_t ux = 0, uy = 0;  // Q30
+        direction(dx, dy, ux, uy);
         p = {cx + static_cast<int32_t>((ux * R) >> 30), cy - static_cast<int32_t>((uy * R) >> 30)};
         return true;
     }
@@ -160,12 +176,13 @@ struct FixedEquidistantEval {
     Spot vertex(const geo::Vec3<fx::fixed>& v) const {
         SubPoint s;
         if (fe.point<Flat>(v.w.raw(), v.x.raw(), v.y.raw(), s)) return spot_at(m, s);
-        return other(v.w.raw(), v.x.raw(), v.y.raw(), v);
+        return other(v.w.raw(), v.x.raw(), v.y.raw(), v, v.x.raw(), v.y.raw());
     }
     // Past FixedEquidistant's domain: the far side, else project_vec.
-    [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const geo::Vec3<fx::fixed>& v) const {
+    [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const geo::Vec3<fx::fixed>& v, int64_t dx,
+                                 int64_t dy) const {
         SubPoint s;
-        if (far.point(w, x, y, s)) return spot_at(m, s);
+        if (far.point(w, x, y, s, dx, dy)) return spot_at(m, s);
         if (far.near_antipode(w, x, y)) return {};
         return general_spot(K, m, v);
     }
@@ -175,12 +192,12 @@ struct FixedEquidistantEval {
     // 2^56.
     Spot point(int64_t a, int64_t b) const {
         constexpr int64_t half = int64_t{1} << (Math::kFrac - 1);
-        const int64_t w = (a * pw + b * qw + half) >> Math::kFrac, x = (a * px + b * qx + half) >> Math::kFrac,
-                      y = (a * py + b * qy + half) >> Math::kFrac;
+        const int64_t X = a * px + b * qx, Y = a * py + b * qy;
+        const int64_t w = (a * pw + b * qw + half) >> Math::kFrac, x = (X + half) >> Math::kFrac, y = (Y + half) >> Math::kFrac;
         SubPoint s;
         if (fe.point<Flat>(w, x, y, s)) return spot_at(m, s);
         auto sat = [](int64_t v) { return fx::fixed::from_raw(fx::detail::saturate32(v)); };
-        return other(w, x, y, {sat(w), sat(x), sat(y)});
+        return other(w, x, y, {sat(w), sat(x), sat(y)}, X, Y);
     }
 };
 

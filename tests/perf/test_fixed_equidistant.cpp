@@ -156,8 +156,11 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
 // w = -1/2 on the sphere), with K from -1 to 1. Points the reference shows within the clip
 // circle are compared; where the two disagree on whether a point is shown or inside, both
 // must be within 0.05 px of the clip circle or the horizon's image. Fixed point within 0.05 px
-// more than 10 px inside the clip circle, and 0.2 px within it, where at K = 1 the antipode's
-// neighbourhood turns its Q16.16 error into the bearing; float within 0.05 px, double 0.01 px.
+// more than 10 px inside the clip circle, and 0.3 px within it, where at K = 1 the antipode's
+// neighbourhood turns its Q16.16 error into the bearing: the ends' rounding (2^-17 a
+// coordinate) times the weights (up to 2 there) over the point's small S_K(r) (0.014 at 0.1 px
+// inside an 800x480 clip circle) is 0.001 rad of bearing, 0.25 px; float within 0.05 px,
+// double 0.01 px.
 // A misplaced point is pixels away.
 struct HalvingErr {
     double worst = 0, inner = 0;  // all points; those more than 10 px inside the clip circle
@@ -262,8 +265,8 @@ TEST(FastPaths, HalvingPointsAreOnTheGeodesic) {
     EXPECT_GT(kernel.points, 10000);
     EXPECT_LE(kernel.inner, 0.05);
     EXPECT_LE(general.inner, 0.05);
-    EXPECT_LE(kernel.worst, 0.2);
-    EXPECT_LE(general.worst, 0.2);
+    EXPECT_LE(kernel.worst, 0.3);
+    EXPECT_LE(general.worst, 0.3);
     EXPECT_LE(single.worst, 0.05);
     EXPECT_LE(twice.worst, 0.01);
 }

@@ -146,7 +146,7 @@ TEST(FastPaths, RasterIntoACanvasIsTheGenericLoop) {
                 const render::LineStyle style = styles[rng() % 5];
                 const bool closed = rng() % 4 == 0;
                 const render::Rgb color{static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng())};
-                const bool as_line = n == 2 && rng() % 2 == 0;  // with its end point: the open polyline
+                const bool as_line = n == 2 && rng() % 2 == 0;  // with its end points: the open polyline
                 // Two lines in three into a row band (a thread's share of draw_world): thin lines
                 // past its edges take the 32-bit loop, visit_polyline cuts them exactly in 64 bits.
                 render::RowRange rows;

@@ -40,6 +40,12 @@ inline bool curves_whole() {
 }
 inline int thin() { return curves_whole() ? 1 : 4; }
 
+// The bounds the checks assert. Within: the one pixel. Gap: a thin polyline leaves none
+// of its points more than sqrt 1.25 = 1.12 px from a lit pixel's centre (raster.hpp, tested in
+// test_joins.cpp) and its chords stay within 0.35 px of the curve (edge_curve.hpp): 1.47 px.
+inline constexpr double kWithinPx = 1.0;
+inline constexpr double kGapPx = 1.5;
+
 struct CurveCheck {
     double worst = 0, gap = 0;
     long pixels = 0, samples = 0;

@@ -15,8 +15,8 @@
 namespace noneuclid {
 namespace {
 
-constexpr double kWithin = 1.0;  // px: a drawn pixel's centre from the true curve
-constexpr double kGap = 1.5;     // px: a true curve's point from the nearest drawn pixel's centre
+constexpr double kWithin = testing::kWithinPx;  // px: a drawn pixel's centre from the true curve
+constexpr double kGap = testing::kGapPx;        // px: a true curve's point from the nearest drawn pixel's centre
 
 template <class W>
 testing::CurveCheck run_and_check(world::Scene s, double K, int frames, int every, geo::Projection p, int w, int h) {

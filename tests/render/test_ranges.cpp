@@ -28,10 +28,8 @@ namespace {
 using fx::fixed;
 using world::Ranges;
 
-// A drawn pixel's centre from the true curve, and the true curve from the drawing
-// (curve_reference.hpp), px.
-constexpr double kWithinPx = 1.0;
-constexpr double kGapPx = 1.5;
+using testing::kGapPx;
+using testing::kWithinPx;
 constexpr double kPi = 3.14159265358979323846;
 
 // A scene drawn from the accepted ranges, every body within them (body_within_ranges), so that

@@ -65,8 +65,8 @@ std::set<std::pair<int, int>> lit(const Canvas& c) {
 
 // The reference for an aliased line: along the major axis, each pixel whose centre coordinate
 // lies in [start, end), the pixel containing the exact line point there (computed in long
-// double, rounded down), plus the pixel containing the end point. *ties counts the columns whose
-// exact line point lies on a pixel boundary (where rounding down decides).
+// double, rounded down), plus the pixels containing the two end points. *ties counts the
+// columns whose exact line point lies on a pixel boundary (where rounding down decides).
 std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int h, long* ties = nullptr) {
     std::set<std::pair<int, int>> s;
     const long double x0 = a.x / 256.0L, y0 = a.y / 256.0L, x1 = b.x / 256.0L, y1 = b.y / 256.0L;
@@ -86,6 +86,7 @@ std::set<std::pair<int, int>> reference_line(SubPoint a, SubPoint b, int w, int 
             xm ? add(i, j) : add(j, i);
         }
     }
+    add(static_cast<long long>(std::floor(x0)), static_cast<long long>(std::floor(y0)));
     add(static_cast<long long>(std::floor(x1)), static_cast<long long>(std::floor(y1)));
     return s;
 }
@@ -339,7 +340,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
                 ASSERT_EQ(cb.get_word(x, y), in ? ca.get_word(x, y) : before[static_cast<std::size_t>(y * W + x)])
                     << "pattern " << k << " pixel " << x << "," << y << " rows " << y0 << ".." << y1;
             }
-        if (n == 2 && !pat.closed) {  // draw_line too, with and without its end point
+        if (n == 2 && !pat.closed) {  // draw_line too, with and without its end points
             for (bool end : {true, false}) {
                 Guarded c(W, H, f), d(W, H, f);
                 draw_line(c.canvas(), pat.pts[0], pat.pts[1], col, st, end);

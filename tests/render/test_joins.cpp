@@ -1,13 +1,20 @@
-// Thick aliased polylines without notches at their joins: every pixel whose centre lies within
-// half the line's width of one of the polyline's segments (the union of the segments' capsules,
-// computed here in double from the same sub-pixel points) is lit, and no other, for sharp,
-// right-angled and shallow turns, several widths, whole and in row bands.
+// Polylines at their joins and ends, against the segments computed here in double from the
+// same sub-pixel points:
+//  - thick aliased polylines without notches: every pixel whose centre lies within half the
+//    line's width of one of the segments (the union of their capsules) is lit, and no other,
+//    for sharp, right-angled and shallow turns, several widths, whole and in row bands;
+//  - thin aliased polylines without gaps: every point of every segment lies within sqrt 1.25 px
+//    of a lit pixel's centre (raster.hpp), folds back, turns across the diagonals and the ends
+//    included, and every lit pixel's centre within sqrt 0.5 px of a segment (it holds a point
+//    of the line).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "render/canvas.hpp"
@@ -92,6 +99,62 @@ TEST(ThickJoins, RandomPolylinesWholeAndInRowBands) {
         EXPECT_EQ(band.missed, 0) << k << " band at " << y0;
         EXPECT_EQ(band.extra, 0) << k << " band at " << y0;
     }
+}
+
+void collect(int x, int y, int, void* ctx) { static_cast<std::set<std::pair<int, int>>*>(ctx)->insert({x, y}); }
+
+TEST(ThinJoins, EveryPointOfAPolylineIsWithinAPixelOfALitPixel) {
+    std::mt19937 rng(1125);
+    std::uniform_real_distribution<double> u(0, 1);
+    double worst_point = 0, worst_pixel = 0;
+    long folds = 0;
+    for (int k = 0; k < 3000; ++k) {
+        // 2 to 7 points on the canvas, each turning from the last heading by any angle (a fifth
+        // of them folding straight back), 0.3 to 25 px apart; open or closed.
+        std::vector<SubPoint> pts;
+        double px = 30 + 100 * u(rng), py = 30 + 60 * u(rng), heading = 2 * M_PI * u(rng);
+        const int n = 2 + static_cast<int>(6 * u(rng));
+        pts.push_back(to_sub(px, py));
+        for (int i = 1; i < n; ++i) {
+            const bool fold = u(rng) < 0.2;
+            folds += fold;
+            heading += fold ? M_PI : 2 * M_PI * u(rng) - M_PI;
+            const double len = 0.3 + 24.7 * u(rng);
+            px = std::clamp(px + len * std::cos(heading), 1.0, kW - 1.0);
+            py = std::clamp(py + len * std::sin(heading), 1.0, kH - 1.0);
+            pts.push_back(to_sub(px, py));
+        }
+        const bool closed = u(rng) < 0.5;
+        std::set<std::pair<int, int>> lit;
+        visit_polyline(kW, kH, pts.data(), n, closed, {}, collect, &lit);
+        const std::size_t segments = closed ? pts.size() : pts.size() - 1;
+        for (std::size_t i = 0; i < segments; ++i) {
+            const SubPoint a = pts[i], b = pts[(i + 1) % pts.size()];
+            const double L = std::hypot(b.x - a.x, b.y - a.y) / 256.0;
+            const int steps = 1 + static_cast<int>(L / 0.02);
+            for (int s = 0; s <= steps; ++s) {
+                const double t = double(s) / steps;
+                const double x = (a.x + t * (b.x - a.x)) / 256.0, y = (a.y + t * (b.y - a.y)) / 256.0;
+                double best = 1e9;
+                for (int dy = -2; dy <= 2; ++dy)
+                    for (int dx = -2; dx <= 2; ++dx) {
+                        const int cx = static_cast<int>(std::floor(x)) + dx, cy = static_cast<int>(std::floor(y)) + dy;
+                        if (lit.count({cx, cy})) best = std::min(best, std::hypot(x - cx - 0.5, y - cy - 0.5));
+                    }
+                worst_point = std::max(worst_point, best);
+                ASSERT_LE(best, std::sqrt(1.25) + 1e-9) << "polyline " << k << " segment " << i << " at (" << x << ", " << y << ")";
+            }
+        }
+        for (const auto& [x, y] : lit) {
+            double d = 1e9;
+            for (std::size_t i = 0; i < segments; ++i) d = std::min(d, to_segment(x + 0.5, y + 0.5, pts[i], pts[(i + 1) % pts.size()]));
+            worst_pixel = std::max(worst_pixel, d);
+            ASSERT_LE(d, std::sqrt(0.5) + 1e-9) << "polyline " << k << " pixel (" << x << ", " << y << ")";
+        }
+    }
+    EXPECT_GT(folds, 1000);
+    RecordProperty("worst_point_px", std::to_string(worst_point));
+    RecordProperty("worst_pixel_px", std::to_string(worst_pixel));
 }
 
 }  // namespace
