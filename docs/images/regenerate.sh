@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Redraw the pictures in docs/images/ with the current program (the README shows them).
-#   docs/images/regenerate.sh        # builds the release preset if needed; needs python3
+#   docs/images/regenerate.sh [NONEUCLID]  # builds the release preset if needed; needs python3
 #
 # kiosk.png      the kiosk scene after 120 frames (2 s), anti-aliased, with the HUD, 800x480
 # curvature.png  the same scene and frame at K = -1, 0 and +1, side by side (three 400x400
@@ -10,15 +10,22 @@
 # game.png       the game at K = -1, played by game.actions (fire, key 1, turns, thrust)
 # game-timelapse.png  attract mode playing the game for 30 s (a headless run, recorded), a
 #                frame every 2 s over the last frame's grid
+# kiosk-k1.png   the kiosk scene at K = +1 (the antipode is the rim), anti-aliased, 800x480
+# fig17.png      the demo's figure 17: K swept from -1 to +1, the grid at each sampled K
+# projections-k1.png, projections-k-1.png  the kiosk scene in the five projections at K = +1
+#                and -1 (equidistant, stereographic, gnomonic, orthographic, Lambert), 320x320 each
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
-nc=build/release/noneuclid
+nc=${1:-build/release/noneuclid}
 if [ ! -x "$nc" ]; then
     cmake --preset release >/dev/null && cmake --build --preset release --target noneuclid -j 2 >/dev/null
 fi
 "$nc" render --scene kiosk --frames 120 --aa --hud --size 800x480 --out docs/images/kiosk.png
+"$nc" render --scene kiosk --frames 120 --aa --size 800x480 --curvature 1 --out docs/images/kiosk-k1.png
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+"$nc" demo --no-hud --out-dir "$tmp/demo" >/dev/null
+cp "$tmp/demo/fig17.png" docs/images/fig17.png
 "$nc" render --actions docs/images/game.actions --frames 570 --out docs/images/game.png
 "$nc" run --display png --scene asteroids --attract 0.5 --frames 1800 --aa --scores none --record "$tmp/game.rec" \
     --screenshot "$tmp/game-last.png"
@@ -72,6 +79,14 @@ with open(sys.argv[-1], 'wb') as out:
 print('regenerate.sh: wrote', sys.argv[-1], f'({width}x{h})')
 PY
 python3 "$tmp/join.py" "$tmp/k-1.png" "$tmp/k0.png" "$tmp/k1.png" docs/images/curvature.png
+for k in -1 1; do
+    panels=()
+    for p in equidistant stereographic gnomonic orthographic lambert; do
+        "$nc" render --scene kiosk --frames 120 --aa --size 320x320 --curvature "$k" --projection "$p" --out "$tmp/$p$k.png"
+        panels+=("$tmp/$p$k.png")
+    done
+    python3 "$tmp/join.py" "${panels[@]}" "docs/images/projections-k$k.png"
+done
 # The textured scene at K = -1, 0, +1, and through the sweep: K = -1, -0.5, 0, 0.5, 1.
 for k in -1 -0.5 0 0.5 1; do
     "$nc" render --scene textured --frames 60 --aa --size 400x400 --curvature "$k" --out "$tmp/t$k.png"

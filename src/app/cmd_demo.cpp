@@ -1,5 +1,5 @@
 // `noneuclid demo`: the paper's figures and the kiosk's picture (app/figures.hpp) as PNG files
-// in a directory, and where they are.
+// in a directory, and where they are. --size is one panel's size.
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
@@ -15,7 +15,7 @@ namespace noneuclid::app {
 int demo_command(int argc, char** argv, int first) {
     std::string dir = "out";
     Engine engine = Engine::fixed;
-    int width = 0, height = 0;  // 0: each figure's own size
+    int width = 0, height = 0;  // a panel's; 0: each figure's own
     bool hud = true;
     Args args(argc, argv, first);
     while (args.more()) {
@@ -35,13 +35,11 @@ int demo_command(int argc, char** argv, int first) {
     for (int i = 0; i < kFigureCount; ++i) {
         const Figure& f = kFigures[i];
         Options o = defaults(Command::render);
-        o.scene = f.scene, o.frames = f.frames, o.timelapse = f.timelapse, o.aa = f.aa, o.hud = hud && f.hud;
-        o.engine = engine;
+        o.hud = hud, o.engine = engine;
         o.width = width > 0 ? width : f.width, o.height = height > 0 ? height : f.height;
-        const world::Scene scene = load_scene(o);
         Picture picture;
         const std::string path = dir + "/" + f.name + ".png";
-        if (render_picture(o, scene, nullptr, font.font, picture).stopped) {
+        if (render_figure(f, o, font.font, picture).stopped) {
             std::fprintf(stderr, "noneuclid: stopped by signal %d; %s is left as it was.\n", platform::stop_signal(),
                          path.c_str());
             return 1;

@@ -1,8 +1,11 @@
 // `noneuclid dump` (a scene's state as JSON Lines, one line a frame) and `noneuclid render`
-// (its last frame as a PNG).
+// (its last frame as a PNG, the run as an animated GIF).
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cmath>
 #include <cstring>
+#include <memory>
 
 #include "app/commands.hpp"
 #include "app/picture.hpp"
@@ -44,26 +47,65 @@ int dump_command(int argc, char** argv, int first) {
     return std::fflush(stdout) == 0 ? 0 : write_failed();
 }
 
+namespace {
+// render --gif: the run's frames into an animated GIF, each shown for as long as the world time
+// it stands for (o.gif_every / 60 s at dt 1/60), in whole centiseconds that add up, at least 2
+// (what GIF viewers take as the shortest).
+class GifFrames final : public FrameSink {
+public:
+    GifFrames(std::unique_ptr<platform::GifWriter> gif, double seconds) : gif_(std::move(gif)), seconds_(seconds) {}
+    bool frame(const render::Canvas& c, long) override {
+        shown_ += seconds_ * 100;
+        const int cs = std::max(2, static_cast<int>(std::lround(shown_)) - given_);
+        given_ += cs;
+        return gif_->frame(c, cs, error_);
+    }
+    bool finish(std::string& error) { return gif_->finish(error); }
+    const std::string& error() const { return error_; }
+
+private:
+    std::unique_ptr<platform::GifWriter> gif_;
+    double seconds_, shown_ = 0;
+    int given_ = 0;
+    std::string error_;
+};
+}  // namespace
+
 int render_command(int argc, char** argv, int first) {
     Script script;
     const Options o = layered_options(argc, argv, first, Command::render, script);
-    if (o.out.empty()) usage_error("render needs --out FILE.png: where to write the picture.");
+    if (o.out.empty() && o.gif.empty())
+        usage_error("render needs --out FILE.png or --gif FILE.gif: where to write the picture.");
     const world::Scene scene = load_scene(o);
     const platform::LoadedFont font = load_font(o);
-    platform::catch_stop_signals();  // a signal leaves --out as it was (render_picture, write_png)
+    std::string error;
+    std::unique_ptr<GifFrames> gif;
+    if (!o.gif.empty()) {  // opened first: a bad path is said before the run
+        std::unique_ptr<platform::GifWriter> w = platform::open_gif(o.gif, o.width, o.height, error);
+        if (!w) {
+            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+            return 1;
+        }
+        gif = std::make_unique<GifFrames>(std::move(w), o.dt * static_cast<double>(o.gif_every));
+    }
+    platform::catch_stop_signals();  // a signal leaves --out and --gif as they were (render_picture, write_png, GifWriter)
     Picture picture;
-    const PictureResult r = render_picture(o, scene, &script, font.font, picture);
+    const PictureResult r = render_picture(o, scene, &script, font.font, picture, gif.get(), o.gif_every);
+    const std::string what = o.out.empty() ? o.gif : o.gif.empty() ? o.out : o.out + " and " + o.gif;
     if (r.stopped) {
         std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames; %s is left as it was.\n",
-                     platform::stop_signal(), r.frame, o.out.c_str());
+                     platform::stop_signal(), r.frame, what.c_str());
         return 1;
     }
-    std::string error;
-    if (!platform::write_png(o.out, picture.canvas, error)) {
+    if (r.refused || (gif && !gif->finish(error))) {
+        std::fprintf(stderr, "noneuclid: %s\n", (r.refused ? gif->error() : error).c_str());
+        return 1;
+    }
+    if (!o.out.empty() && !platform::write_png(o.out, picture.canvas, error)) {
         std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
         return 1;
     }
-    std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, %s, K = %.3f, frame %ld)\n", o.out.c_str(), o.width, o.height,
+    std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, %s, K = %.3f, frame %ld)\n", what.c_str(), o.width, o.height,
                  o.format.name, r.K, r.frame);
     return 0;
 }

@@ -1,15 +1,38 @@
 #include "app/figures.hpp"
 
+#include <cstdio>
+
 namespace noneuclid::app {
 
+// Figures 14-16 at K = +1 and -1 as the paper shows them; figure 17 from K = -1 to +1 in 5 s
+// (the scene's sweep), its grid laid down at each sampled K.
 const Figure kFigures[] = {
-    {"kiosk", "kiosk", 60, 0, true, true, 800, 480, "the kiosk's picture"},
-    {"fig1", "fig1", 120, 0, false, false, 600, 600, "figure 1's bodies"},
-    {"fig14", "fig14", 600, 40, false, false, 600, 600, "figure 14's time-lapse"},
-    {"fig15", "fig15", 600, 40, false, false, 600, 600, "figure 15's time-lapse"},
-    {"fig16", "fig16", 120, 15, false, false, 600, 600, "figure 16's time-lapse"},
-    {"fig17", "fig17", 250, 25, false, true, 600, 600, "figure 17's time-lapse through a change of K"},
+    {.name = "kiosk", .scene = "kiosk", .frames = 60, .aa = true, .hud = true, .width = 800, .height = 480,
+     .what = "the kiosk's picture", .own_K = true},
+    {.name = "fig1", .scene = "fig1", .frames = 120, .what = "figure 1 (a, b, c): the bodies at K = +1, 0 and -1",
+     .panels = 3, .K = {1, 0, -1}},
+    {.name = "fig14", .scene = "fig14", .frames = 600, .timelapse = 40,
+     .what = "figure 14: a time-lapse along the geodesic orthogonal to the radius, at K = +1 and -1", .panels = 2,
+     .K = {1, -1}},
+    {.name = "fig15", .scene = "fig15", .frames = 600, .timelapse = 40,
+     .what = "figure 15: the same start, heading 45 degrees, at K = +1 and -1", .panels = 2, .K = {1, -1}},
+    {.name = "fig16", .scene = "fig16", .frames = 120, .timelapse = 15,
+     .what = "figure 16: the paper's square spinning, at K = +1 and -1", .panels = 2, .K = {1, -1}},
+    {.name = "fig17", .scene = "fig17", .frames = 300, .timelapse = 25,
+     .what = "figure 17: K swept from -1 to +1 while the body moves, the grid at K = -1, -0.5, 0, 0.5 and 1",
+     .own_K = true, .grid_trail = 75, .label = "K = -1 to +1"},
 };
 const int kFigureCount = static_cast<int>(sizeof kFigures / sizeof kFigures[0]);
+
+void figure_label(const Figure& f, int panel, char* out, int size) {
+    if (f.label)
+        std::snprintf(out, static_cast<std::size_t>(size), "%s", f.label);
+    else if (f.own_K)
+        std::snprintf(out, static_cast<std::size_t>(size), "%s", "");
+    else if (f.K[panel] == 0)
+        std::snprintf(out, static_cast<std::size_t>(size), "%s", "K = 0");
+    else
+        std::snprintf(out, static_cast<std::size_t>(size), "K = %+.2g", f.K[panel]);
+}
 
 }  // namespace noneuclid::app

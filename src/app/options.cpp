@@ -78,7 +78,10 @@ bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
     else if (is("--scores", kRun)) o.scores = a.value(opt);
     else if (is("--width", kRender)) o.line_width = a.number(opt, 0.1, 64);
     else if (is("--timelapse", kRender)) o.timelapse = static_cast<long>(a.count(opt, 1, 100000000));
+    else if (is("--timelapse-grids", kRender)) o.timelapse_grids = static_cast<long>(a.count(opt, 1, 100000000));
     else if (is("--out", kRender)) o.out = a.value(opt);
+    else if (is("--gif", kRender)) o.gif = a.value(opt);
+    else if (is("--gif-every", kRender)) o.gif_every = static_cast<long>(a.count(opt, 1, 100000000));
     else if (is("--display", kRun)) display_value(a.value(opt), o);
     else if (is("--board", kRun)) o.board = a.value(opt);
     else if (is("--input", kRun)) o.input = input_value(opt, a.value(opt));

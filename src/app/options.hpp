@@ -38,7 +38,10 @@ struct Options {
     bool best_given = false;
     double line_width = 1;      // render
     long timelapse = 0;         // render
-    std::string out;            // render
+    long timelapse_grids = 0;   // render: and every this-many-th frame's grid (0: none)
+    std::string out;            // render: the PNG
+    std::string gif;            // render: the animated GIF
+    long gif_every = 2;         // render: a GIF frame every this many frames
     // A live run
     std::string display;        // "" chosen, x11, fbdev, png
     std::string device;         // fbdev:DEVICE ("" the board's)

@@ -107,6 +107,29 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
 // truncated or damaged, too large.
 bool read_texture(const std::string& path, world::Image& out, std::string& why);
 
+// An animated GIF written frame by frame (platform/desktop/gif_file.cpp, giflib), whole or not
+// at all as write_png writes (AtomicFile): `path` is untouched until finish() succeeds, and a
+// failed write, a stop signal (stop_signal()) or a writer destroyed unfinished leave it as it
+// was. Every frame has the writer's size and its own colour table: its colours exactly when
+// there are at most 256, else giflib's median-cut quantisation of them. It loops for ever.
+class GifWriter {
+public:
+    virtual ~GifWriter() = default;
+    // Adds a frame shown for `centiseconds`; false with one sentence in `error`.
+    virtual bool frame(const render::Canvas& c, int centiseconds, std::string& error) = 0;
+    virtual bool finish(std::string& error) = 0;
+};
+// Null with one sentence in `error` (naming `path`, ending with the fix) if it cannot be opened,
+// or this build has no giflib.
+std::unique_ptr<GifWriter> open_gif(const std::string& path, int width, int height, std::string& error);
+// Reads an animated GIF back: its size, and each frame as 8-bit RGB (3 bytes a pixel, rows
+// packed) with its delay in centiseconds. For the tests.
+struct GifFrame {
+    std::string rgb;
+    int centiseconds = 0;
+};
+bool read_gif(const std::string& path, int& width, int& height, std::vector<GifFrame>& frames, std::string& error);
+
 // A font with the bytes it points into (move-only: font.glyphs points into bytes).
 struct LoadedFont {
     std::vector<uint8_t> bytes;

@@ -11,6 +11,15 @@
 namespace noneuclid::app {
 namespace {
 
+// The colour of a time-lapse's grid at K: blue at K = -1, grey at 0, red at +1.
+render::Rgb curvature_tint(double K) {
+    const double k = K < -1 ? -1 : (K > 1 ? 1 : K);
+    const double from[3] = {150, 160, 180}, to[3] = {k < 0 ? 60. : 240., k < 0 ? 140. : 70., k < 0 ? 255. : 110.};
+    const double a = k < 0 ? -k : k;
+    auto mix = [&](int i) { return static_cast<uint8_t>(from[i] + (to[i] - from[i]) * a + 0.5); };
+    return {mix(0), mix(1), mix(2)};
+}
+
 template <class W>
 class EngineSession final : public Session {
 public:
@@ -73,6 +82,8 @@ public:
         render::DrawOptions o = options_.draw;
         if (layers == Layers::bodies) o.grids = false;
         if (layers == Layers::backdrop_and_grids) o.bodies = false;
+        if (layers == Layers::grids_tinted)
+            o.bodies = false, o.tint_grids = true, o.grid_tint = curvature_tint(static_cast<double>(world_.K));
         if (pool_.size() > 1)
             render::draw_world(c, world_, o, parallel_, pool_, backdrop);
         else

@@ -46,8 +46,9 @@ protected:
     ~GameOverSink() = default;
 };
 
-// What Session::draw_world draws: everything, or a time-lapse's layers.
-enum class Layers { all, bodies, backdrop_and_grids };
+// What Session::draw_world draws: everything, or a time-lapse's layers (grids_tinted: the grids
+// in a colour of K, from blue at -1 to red at +1).
+enum class Layers { all, bodies, grids_tinted, backdrop_and_grids };
 
 class Session {
 public:

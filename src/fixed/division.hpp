@@ -129,6 +129,19 @@ inline uint64_t udiv_floor_reciprocal(uint64_t n, uint32_t d) noexcept {
     return q;
 }
 
+// sqrt(v) for v > 0 from the table seed alone, to within 2^-17 of it (relative): isqrt64 without
+// its Newton step and exact fix-up, for where a few digits are enough.
+inline uint32_t sqrt_seed(uint64_t v) noexcept {
+    const int sh = std::countl_zero(v) & ~1;
+    const uint64_t m = v << sh;  // in [2^62, 2^64)
+    const uint32_t i = static_cast<uint32_t>(m >> 56) - 64;
+    const uint64_t f = (m >> 24) & 0xFFFFFFFFu;
+    const uint32_t t0 = tables::sqrt_q31[i], t1 = tables::sqrt_q31[i + 1];
+    uint64_t r = (uint64_t{t0} + (((uint64_t{t1} - t0) * f) >> 32)) << 1;  // sqrt(m), in [2^31, 2^32]
+    if (r > 0xFFFFFFFFu) r = 0xFFFFFFFFu;
+    return static_cast<uint32_t>(r >> (sh / 2));
+}
+
 // floor(sqrt(v)) for any 64-bit v: table seed (18 bits), one Newton step taken on the small
 // remainder (so the reciprocal's own error barely matters), exact fix-up.
 template <bool Native = kDivideInstruction>

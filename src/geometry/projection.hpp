@@ -65,6 +65,50 @@ Projected<T> project(T K, T r, Projection p) {
     return {r, true};
 }
 
+// The part of the world a projection shows: the disc r <= shown_radius, which the screen's
+// limit circle frames. It is the limit radius R, except on the sphere (K > 0) where the
+// projection's image of r <= R would be unbounded or folded: the gnomonic view is cut at
+// 60 degrees (pi / 3 sqrt K) and the stereographic at 120 degrees (2 pi / 3 sqrt K), where
+// each stretches a radial step four times as much as at the centre (1 / C_K(r)^2, resp.
+// 1 / C_K(r/2)^2), and the orthographic at the equator (pi / 2 sqrt K), where it folds. Each is
+// continuous in K (it is R until K reaches the cut).
+template <class T>
+T shown_radius(T K, T R, Projection p) {
+    using std::sqrt;
+    if (!(K > T(0))) return R;
+    T cut;
+    switch (p) {
+        case Projection::gnomonic: cut = pi_v<T> / T(3) / sqrt(K); break;
+        case Projection::stereographic: cut = T(2) * pi_v<T> / T(3) / sqrt(K); break;
+        case Projection::orthographic: cut = pi_v<T> / T(2) / sqrt(K); break;
+        default: return R;
+    }
+    return cut < R ? cut : R;
+}
+// The projected radius of the shown disc's rim (the limit circle on the screen).
+template <class T>
+T rim_rho(T K, T R, Projection p) {
+    return project(K, shown_radius(K, R, p), p).rho;
+}
+// The sphere's antipode (K > 0, distance pi / sqrt K) is a point where the equidistant and
+// Lambert views are singular: they draw it as a whole circle, of this projected radius
+// (pi / sqrt K, resp. 2 / sqrt K). False for the other views (it is at infinity or hidden)
+// and for K <= 0.
+template <class T>
+bool antipode_circle(T K, Projection p, T& rho) {
+    using std::sqrt;
+    if (!(K > T(0))) return false;
+    if (p == Projection::azimuthal_equidistant) return rho = pi_v<T> / sqrt(K), true;
+    if (p == Projection::lambert_equal_area) return rho = T(2) / sqrt(K), true;
+    return false;
+}
+// Whether every geodesic a projection draws is a straight line: the gnomonic view's (great
+// circles through the projection's centre plane), and every view of the plane (K = 0).
+template <class T>
+bool straight_geodesics(T K, Projection p) {
+    return K == T(0) || p == Projection::gnomonic;
+}
+
 // A screen point: centre (cx, cy) in px, `scale` px per unit of rho.
 template <class T>
 struct ScreenPoint {

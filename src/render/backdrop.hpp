@@ -1,7 +1,9 @@
-// The backdrop of a frame: the background, and outside the limit circle the shaded area of the
-// paper's figures. Written row by row as spans of one colour, each pixel once: the same pixels
-// as Canvas::clear(background) then shade_outside_circle (raster.hpp), whose column range per
-// row it shares (columns_inside_circle).
+// The backdrop of a frame: the background, outside the limit circle the shaded area of the
+// paper's figures, and the limit circle itself as a line of the frame's width in the rim colour
+// (anti-aliased with the lines). Written row by row as spans of one colour, each pixel once
+// (the anti-aliased circle's pixels then blended): without the circle, the same pixels as
+// Canvas::clear(background) then shade_outside_circle (raster.hpp), whose column range per row
+// it shares (columns_inside_circle).
 #pragma once
 
 #include <cstddef>
@@ -19,20 +21,16 @@ struct LimitCircle {
     double cx = 0, cy = 0, r = 0;
 };
 template <class T>
-LimitCircle limit_circle(const ScreenMap<T>& m, T R) {
-    return {static_cast<double>(m.cx), static_cast<double>(m.cy), static_cast<double>(m.scale) * static_cast<double>(R)};
+LimitCircle limit_circle(const ScreenMap<T>& m) {
+    return {static_cast<double>(m.cx), static_cast<double>(m.cy), m.rim};
 }
 
 // Rows [y0, y1) of the backdrop (clamped to the canvas). backdrop.cpp.
 void draw_backdrop_rows(const Canvas& c, const LimitCircle& circle, const DrawOptions& o, int y0, int y1);
 
 template <class T>
-void draw_backdrop_rows(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOptions& o, int y0, int y1) {
-    draw_backdrop_rows(c, limit_circle(m, R), o, y0, y1);
-}
-template <class T>
-void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, T R, const DrawOptions& o) {
-    draw_backdrop_rows(c, limit_circle(m, R), o, 0, c.height());
+void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, const DrawOptions& o) {
+    draw_backdrop_rows(c, limit_circle(m), o, 0, c.height());
 }
 
 namespace detail {

@@ -1,16 +1,20 @@
 // One body's screen points and their raster. body_screen_points computes a body's geometry
-// (vertices, edges tessellated at the body's level, projection, screen mapping) into one
-// polyline of sub-pixel points, with kBreak where the projection cannot show a point;
-// draw_screen_points draws such a list. The fixed engine's equidistant view takes its own loop
-// (render/fixed_points.hpp); every other engine and projection the general one below.
+// (vertices, edges tessellated adaptively on the screen, projection, screen mapping, clipping)
+// into one polyline of sub-pixel points, with kBreak where it leaves the clip circle or the
+// projection cannot show a point; draw_screen_points draws such a list. The fixed engine's
+// equidistant view evaluates its points with its own kernel (render/fixed_points.hpp); every
+// other engine and projection with the general one (VecEval).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
 
 #include "geometry/geometry.hpp"
 #include "render/canvas.hpp"
+#include "render/clip_sink.hpp"
 #include "render/draw_options.hpp"
+#include "render/edge_curve.hpp"
 #include "render/fixed_points.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
@@ -19,19 +23,79 @@
 
 namespace noneuclid::render {
 
-// The room a body's screen points need: every tessellated point, plus a break after each.
+// The room a body's screen points need: a first point, and for every chord of its curve at
+// most three entries (ClipSink: two points where a chord crosses the clip circle twice, and a
+// break); the chords are its edges (a walked edge two) and the halvings of its budget, or for
+// the paper's engine its edges' points at its tessellation level.
 template <class B>
 std::size_t body_point_capacity(const B& b) {
-    return 2 * (b.local.size() * static_cast<std::size_t>(b.desc->tessellation > 0 ? b.desc->tessellation : 1) + 2);
+    const long n = static_cast<long>(b.local.size()), edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
+    const long level = b.desc->tessellation > 0 ? b.desc->tessellation : 1;
+    const long chords = std::max(2 * edges + body_split_budget(edges), edges * level);
+    return static_cast<std::size_t>(3 * chords + 2);
 }
 
-// One body's geometry: its vertices, its edges tessellated at the body's level, projected and
-// mapped to the screen, into out (room for body_point_capacity(b)) as one polyline with kBreak
-// where a point cannot be shown. Returns the number of entries written. Writes only shape (the
+namespace detail {
+// A walked edge P -> Q of length d: cut in two at its midpoint, found by a walk from P (along
+// P's radial line when the ends are antipodal: every great circle through them is a geodesic,
+// and the one through P's radial line is the convention; else toward Q), and each half drawn by
+// edge_curve (halves still too long are cut again, three times at most, then drawn as chords).
+template <class T, class Eval>
+void walked_edge(const Eval& ev, const ScreenMap<T>& m, T K, const geo::Vec3<T>& P, const geo::Vec3<T>& Q,
+                 const Spot& sp, const Spot& sq, T d, typename SlerpMath<T>::U u, bool straight, ClipSink& sink,
+                 long& budget, int cuts = 0) {
+    using Math = SlerpMath<T>;
+    using geo::Sf;  // and fx::Sf by ADL for fixed
+    if (cuts == 3 || budget <= 0) return sink.chord(sp, sq);
+    --budget;
+    const geo::Polar<T> p = geo::to_polar(K, P), q = geo::to_polar(K, Q);
+    const T heading = geo::antipodal_edge(K, d, Sf(K * d * d)) ? (p.r > T(0) ? p.theta : q.theta) : geo::bearing(K, p, q);
+    const geo::Vec3<T> M = geo::to_vec(K, geo::walk_end(K, p, heading, d / T(2)));
+    const Spot sm = ev.vertex(M);
+    const typename Math::U half_u = Math::quarter(u);
+    Eval e = ev;
+    for (int k = 0; k < 2; ++k) {
+        const geo::Vec3<T>&A = k == 0 ? P : M, &B = k == 0 ? M : Q;
+        const Spot &sa = k == 0 ? sp : sm, &sb = k == 0 ? sm : sq;
+        if (Math::too_long(half_u)) {
+            walked_edge(ev, m, K, A, B, sa, sb, d / T(2), half_u, straight, sink, budget, cuts + 1);
+        } else {
+            e.ends(A, B);
+            edge_curve<T>(e, m, sa, sb, half_u, Math::half(half_u), straight, sink, budget);
+        }
+    }
+}
+// Every edge of a body whose vertices' 3-vectors are vecs (n of them), in the evaluator ev.
+template <class T, class Eval>
+void body_curve(Eval ev, const ScreenMap<T>& m, T K, const ShapeCache<T>& sh, const geo::Vec3<T>* vecs, std::size_t n,
+                std::size_t edges, bool straight, ClipSink& sink) {
+    long budget = body_split_budget(static_cast<long>(edges));
+    const Spot first = ev.vertex(vecs[0]);
+    sink.start(first);
+    Spot sp = first;
+    for (std::size_t e = 0; e < edges; ++e) {
+        const std::size_t f = e + 1 == n ? 0 : e + 1;
+        const Spot sq = f == 0 ? first : ev.vertex(vecs[f]);
+        if (straight && sp.shown && sq.shown) {  // (edge_curve's first case, without ends())
+            sink.chord(sp, sq);
+        } else if (sh.walked[e]) {
+            walked_edge(ev, m, K, vecs[e], vecs[f], sp, sq, sh.length[e], sh.u[e], straight, sink, budget);
+        } else {
+            ev.ends(vecs[e], vecs[f]);
+            edge_curve<T>(ev, m, sp, sq, sh.u[e], sh.h[e], straight, sink, budget);
+        }
+        sp = sq;
+    }
+}
+}  // namespace detail
+
+// One body's geometry: its vertices, its edges tessellated adaptively on the screen
+// (render/edge_curve.hpp), projected, mapped to the screen and clipped to the clip circle, into
+// out (room for body_point_capacity(b)) as one polyline with kBreak where it leaves the circle
+// or a point cannot be shown. Returns the number of entries written. Writes only shape (the
 // body's cache, made for it: refreshed if K changed), verts, vecs and out: bodies can be done
 // on different threads at once. vecs (room for b.local.size()) receives the vertices'
-// 3-vectors; verts (room for b.local.size()) their polar positions with the paper's engine,
-// and is scratch otherwise.
+// 3-vectors; verts (room for b.local.size()) their polar positions with the paper's engine.
 template <class W>
 std::size_t body_screen_points(const W& world, const world::Body<typename W::scalar>& b,
                                ShapeCache<typename W::scalar>& shape, const ScreenMap<typename W::scalar>& m,
@@ -40,57 +104,55 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
     using T = typename W::scalar;
     const std::size_t n = b.local.size();
     if (n == 0) return 0;
-    const int level = b.desc->tessellation;
     const std::size_t edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
-    detail::Cursor cur;
-    auto add_xy = [&](bool visible, T X, T Y) { detail::put_point(out, cur, m, visible, X, Y); };
-    auto add = [&](geo::Polar<T> p) {
-        const geo::ProjectedPoint<T> pp = geo::project_polar(world.K, p, o.projection);
-        add_xy(pp.visible, pp.X, pp.Y);
-    };
+    ClipSink sink(m, out);
     if constexpr (std::is_same_v<typename W::engine, world::Engine<T, false>>) {
         // In the 3-vector model throughout (geometry/geometry.hpp): the vertices are the body's
-        // motion applied to its local 3-vectors, each edge's points its cached slerp weights
-        // applied to its ends, and every point goes straight to the projection plane. An edge's
-        // first point is the previous edge's last.
+        // motion applied to its local 3-vectors, each edge's points slerps of its ends.
         const ShapeCache<T>& sh = shape.refresh(world.K, b);
         const geo::Motion<T> motion = geo::body_motion(world.K, b.centre, b.facing);
         const geo::MotionApply<T> apply(motion);
         apply(sh.local.data(), vecs, n);
+        const bool straight = geo::straight_geodesics(world.K, o.projection);
         if constexpr (std::is_same_v<T, fx::fixed>) {
             detail::FixedEquidistant fe;
-            if (edges > 0 && o.projection == geo::Projection::azimuthal_equidistant && detail::FixedEquidistant::make(m, fe))
-                return world.K.raw() == 0 ? detail::fixed_equidistant_points<true>(world.K, sh, fe, m, vecs, verts, n, edges, level, out)
-                                          : detail::fixed_equidistant_points<false>(world.K, sh, fe, m, vecs, verts, n, edges, level, out);
-        }
-        auto emit = [&](int, bool vis, T X, T Y) { add_xy(vis, X, Y); };
-        if (edges == 0) {
-            const geo::ProjectedPoint<T> pp = geo::project_vec(world.K, vecs[0], o.projection);
-            add_xy(pp.visible, pp.X, pp.Y);
-            return cur.count;
-        }
-        for (std::size_t e = 0; e < edges; ++e) {
-            const std::size_t f = (e + 1) % n;
-            if (!sh.antipodal[e]) {
-                geo::edge_projected(world.K, vecs[e], vecs[f], sh.weights_of(e), level, o.projection, e == 0, emit);
-            } else {  // antipodal ends: walked from the polar end points (rare: K > 0, an edge of length pi / sqrt K)
-                verts[0] = geo::to_polar(world.K, vecs[e]), verts[1] = geo::to_polar(world.K, vecs[f]);  // n >= 2
-                geo::edge_projected(world.K, verts[0], verts[1], vecs[e], vecs[f], level, o.projection, e == 0, emit);
+            if (o.projection == geo::Projection::azimuthal_equidistant && detail::FixedEquidistant::make(m, fe)) {
+                if (world.K.raw() == 0)
+                    detail::body_curve(detail::FixedEquidistantEval<true>{fe, world.K, m}, m, world.K, sh, vecs, n, edges,
+                                       straight, sink);
+                else
+                    detail::body_curve(detail::FixedEquidistantEval<false>{fe, world.K, m}, m, world.K, sh, vecs, n, edges,
+                                       straight, sink);
+                return sink.count();
             }
         }
-        return cur.count;
+        detail::body_curve(VecEval<T>{world.K, o.projection, m}, m, world.K, sh, vecs, n, edges, straight, sink);
+        return sink.count();
     }
+    // The paper's engine: its formulas, in polar, at the body's tessellation level; each point
+    // projected, the chords clipped alike.
+    auto spot = [&](geo::Polar<T> p) {
+        const geo::ProjectedPoint<T> pp = geo::project_polar(world.K, p, o.projection);
+        if (!pp.visible) return Spot{};
+        return spot_at(m, to_pixels(geo::ScreenPoint<T>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
+    };
     world.vertices(b, verts);
     if (edges == 0) {
-        add(verts[0]);
-        return cur.count;
+        sink.start(spot(verts[0]));
+        return sink.count();
     }
-    for (std::size_t e = 0; e < edges; ++e)  // the paper's engine: its formulas, in polar
-        W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], level, [&](int k, geo::Polar<T> p) {
+    Spot prev;
+    for (std::size_t e = 0; e < edges; ++e)
+        W::engine::edge_points(world.K, verts[e], verts[(e + 1) % n], b.desc->tessellation, [&](int k, geo::Polar<T> p) {
             if (k == 0 && e > 0) return;
-            add(p);
+            const Spot s = spot(p);
+            if (k == 0)
+                sink.start(s);
+            else
+                sink.chord(prev, s);
+            prev = s;
         });
-    return cur.count;
+    return sink.count();
 }
 
 // One body's raster: each run between breaks as an open polyline (a single point as a dot).
@@ -115,9 +177,10 @@ bool body_shown(const B& b, const DrawOptions& o) {
     return b.active && !b.hidden && (b.desc->grid ? o.grids : o.bodies);
 }
 
-// A body's colour, as the rasteriser takes it.
+// A body's colour as the options draw it, as the rasteriser takes it.
 template <class B>
-Rgb body_color(const B& b) {
+Rgb body_color(const B& b, const DrawOptions& o) {
+    if (b.desc->grid && o.tint_grids) return o.grid_tint;
     return {b.desc->color.r, b.desc->color.g, b.desc->color.b};
 }
 

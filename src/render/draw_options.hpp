@@ -17,9 +17,12 @@ struct DrawOptions {
     bool shade_outside = true;
     Rgb background{6, 8, 14};
     Rgb outside{26, 30, 44};
-    Rgb rim{90, 100, 130};
+    Rgb rim{200, 205, 215};  // the limit circle's line
+    bool rim_line = true;    // draw the limit circle
     bool grids = true;   // draw grid bodies
     bool bodies = true;  // draw the other bodies
+    bool tint_grids = false;  // draw grid bodies in grid_tint rather than their own colour
+    Rgb grid_tint{};
 };
 
 }  // namespace noneuclid::render

@@ -63,7 +63,7 @@ void draw_body(const Canvas& c, const W& world, std::size_t i, const ScreenMap<t
     if (const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height())) fill_rows(c, *j, 0, c.height(), s.fill.work[0]);
     const std::size_t count =
         body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
-    draw_screen_points(c, s.points.data(), count, body_color(b), LineStyle{o.antialias, o.line_width});
+    draw_screen_points(c, s.points.data(), count, body_color(b, o), LineStyle{o.antialias, o.line_width});
 }
 
 // The whole frame: the backdrop (left out when `backdrop` is false: the bodies are drawn over
@@ -72,8 +72,8 @@ template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar>& s,
                 bool backdrop = true) {
     using T = typename W::scalar;
-    const ScreenMap<T> m = ScreenMap<T>::of(c, world.R);
-    if (backdrop) draw_backdrop(c, m, world.R, o);
+    const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    if (backdrop) draw_backdrop(c, m, o);
     s.fill.begin_frame(c);
     for (std::size_t i = 0; i < world.bodies.size(); ++i)
         if (body_shown(world.bodies[i], o)) draw_body(c, world, i, m, o, s);

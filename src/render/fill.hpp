@@ -130,6 +130,7 @@ private:
         fr.K = K, fr.proj = o.projection, fr.m = m, fr.hemisphere = K > T(0);
         fr.to_local = geo::body_motion_inverse(K, b.centre, b.facing);
         f.job = FillJob{};
+        f.job.clip_cx = m.ox, f.job.clip_cy = m.oy, f.job.clip_r = m.clip;
         f.job.aa = o.antialias;
         f.job.solid = f.texels.tex == nullptr;
         f.job.word = format.pack({b.desc->fill.r, b.desc->fill.g, b.desc->fill.b});

@@ -128,12 +128,17 @@ void fill_rows(const Canvas& c, const FillJob& j, int y0, int y1, RowWork& w) {
     std::size_t taken = 0;  // segments of w.order taken up
     if (!j.brute) sort_segments(j, w);
     for (int y = y0; y < y1; ++y) {
+        // The row's pixels whose centres lie within the shown disc: [lo, hi).
+        const int64_t yc = int64_t{y} * kSub + kSub / 2, dc = yc - j.clip_cy;
+        if (std::abs(dc) > j.clip_r) continue;
+        const int64_t half = isqrt(j.clip_r * j.clip_r - dc * dc);
+        const int lo = static_cast<int>(std::clamp<int64_t>(first_pixel(j.clip_cx - half), 0, c.width()));
+        const int hi = static_cast<int>(std::clamp<int64_t>(last_pixel(j.clip_cx + half) + 1, lo, c.width()));
         if (j.brute) {
-            const int x0 = std::max(j.left, 0), x1 = std::min(j.right, c.width());
+            const int x0 = std::max({j.left, lo}), x1 = std::min(j.right, hi);
             if (x0 < x1) j.test(j.body, c, y, x0, x1, nullptr);
             continue;
         }
-        const int64_t yc = int64_t{y} * kSub + kSub / 2;
         activate(j, yc, w, taken);
         scan_row(j, yc, w);
         const RowCover cover{w.near.data(), w.near.size(), j.rim, j.rim_cx, j.rim_cy, j.rim_r, y};
@@ -142,15 +147,15 @@ void fill_rows(const Canvas& c, const FillJob& j, int y0, int y1, RowWork& w) {
         for (const RowWork::Zone& z : w.zones) {
             const int64_t a = first_pixel(z.from), b = last_pixel(z.to);
             if (crossed % 2 == 1 && next != INT64_MIN) {  // between two zones, inside
-                const int x0 = static_cast<int>(std::clamp<int64_t>(next, 0, c.width()));
-                const int x1 = static_cast<int>(std::clamp<int64_t>(a, 0, c.width()));
+                const int x0 = static_cast<int>(std::clamp<int64_t>(next, lo, hi));
+                const int x1 = static_cast<int>(std::clamp<int64_t>(a, lo, hi));
                 if (x0 < x1) {
                     if (j.solid) out.run(y, x0, x1, j.word);
                     else j.span(j.body, c, y, x0, x1);
                 }
             }
-            const int x0 = static_cast<int>(std::clamp<int64_t>(a, 0, c.width()));
-            const int x1 = static_cast<int>(std::clamp<int64_t>(b + 1, 0, c.width()));
+            const int x0 = static_cast<int>(std::clamp<int64_t>(a, lo, hi));
+            const int x1 = static_cast<int>(std::clamp<int64_t>(b + 1, lo, hi));
             if (x0 < x1) j.test(j.body, c, y, x0, x1, j.aa ? &cover : nullptr);
             while (crossed < w.crossings.size() && w.crossings[crossed] <= z.to) ++crossed;
             next = std::max(next, b + 1);

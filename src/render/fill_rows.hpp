@@ -13,7 +13,8 @@
 // So a pixel is lit exactly when its centre is inside the projected geodesic polygon, wherever
 // the polyline is within `zone` of the true edges. A body holding the sphere's antipode (K > 0)
 // has the antipode's circle as a second boundary (`rim`); a body the polyline cannot follow
-// (a point the projection cannot show) is tested pixel by pixel over its rows (`brute`).
+// (a point the projection cannot show) is tested pixel by pixel over its rows (`brute`). Every
+// row is cut to the shown disc (`clip_*`), the limit circle or the antipode's margin.
 #pragma once
 
 #include <cstddef>
@@ -52,6 +53,9 @@ struct FillJob {
     int32_t zone = 0;  // 1/256 px
     bool rim = false;
     int64_t rim_cx = 0, rim_cy = 0, rim_r = 0;  // the antipode's circle, 1/256 px
+    // The shown disc (ScreenMap's clip circle, 1/256 px): only pixels whose centre lies within it
+    // are painted, as the outlines are clipped to it (a hard edge; the limit circle is drawn on it).
+    int64_t clip_cx = 0, clip_cy = 0, clip_r = int64_t{1} << 40;
     // Runs inside: one colour (`solid`, the packed `word`), or the engine's `span` (a texture).
     bool solid = true;
     uint32_t word = 0;

@@ -1,18 +1,21 @@
-// The fixed engine's equidistant view of a body, the kiosk's hot loop: from the vertices'
-// 3-vectors and the shape cache's slerp weights, each point's 3-vector as the slerp's 64-bit
-// sums, straight to sub-pixels, with no floating point and no division per point
-// (fixed_equidistant_points). Each piece is a function of its own so that its loop's values
-// stay in registers; points outside the fast domain go to the general path (project_vec), out
-// of line. body_screen_points (render/body_points.hpp) takes this path for the fixed engine's
+// The fixed engine's equidistant view, the kiosk's hot path: a point of the 3-vector model
+// straight to sub-pixels, with no floating point and no division per point (FixedEquidistant),
+// its companion past the sphere's equator (FixedFarSide), and the evaluator edge_curve
+// (render/edge_curve.hpp) takes for this view (FixedEquidistantEval): each slerp point computed
+// from its Q30 weights as 64-bit sums, unsaturated, and given to the kernels; points outside
+// their domains go to the general path (project_vec), out of line.
+// body_screen_points (render/body_points.hpp) takes this path for the fixed engine's
 // equidistant view.
 #pragma once
 
 #include <algorithm>
-#include <cstddef>
+#include <bit>
 #include <cstdint>
 
 #include "fixed/math.hpp"
 #include "geometry/geometry.hpp"
+#include "render/clip_sink.hpp"
+#include "render/edge_curve.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
 
@@ -75,174 +78,127 @@ struct FixedEquidistant {
         return true;
     }
 };
-// In fixed_equidistant_points a run is open when the last entry written is a point: the first
-// entry of a body is never a break, and a break is written only after a point.
-inline Cursor cursor_at(const SubPoint* out, const SubPoint* at) {
-    const std::size_t n = static_cast<std::size_t>(at - out);
-    return {n, n > 0 && at[-1].x != kBreak.x};
-}
-// What FixedEquidistant leaves: project_vec, out of the inner loop. Returns where the next
-// entry goes.
-[[gnu::noinline]] inline SubPoint* general_point(fx::fixed K, const ScreenMap<fx::fixed>& m, geo::Vec3<fx::fixed> v,
-                                                 SubPoint* out, SubPoint* at) {
-    const geo::ProjectedPoint<fx::fixed> pp = geo::project_vec(K, v, geo::Projection::azimuthal_equidistant);
-    Cursor c = cursor_at(out, at);
-    put_point(out, c, m, pp.visible, pp.X, pp.Y);
-    return out + c.count;
-}
-// The same for the slerp's point a P + b Q, its 3-vector saturated as geo::edge_projected's.
-[[gnu::noinline]] inline SubPoint* general_slerp_point(fx::fixed K, const ScreenMap<fx::fixed>& m, fx::fixed a, fx::fixed b,
-                                                       const geo::Vec3<fx::fixed>& P, const geo::Vec3<fx::fixed>& Q,
-                                                       SubPoint* out, SubPoint* at) {
-    return general_point(K, m, geo::slerp_point(a, P, b, Q), out, at);
-}
-// An edge whose ends are antipodal on the sphere: walked from its polar end points.
-[[gnu::noinline]] inline SubPoint* antipodal_points(fx::fixed K, const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>& P,
-                                                    const geo::Vec3<fx::fixed>& Q, int level, bool with_start,
-                                                    geo::Polar<fx::fixed>* verts, SubPoint* out, SubPoint* at) {
-    Cursor c = cursor_at(out, at);
-    verts[0] = geo::to_polar(K, P), verts[1] = geo::to_polar(K, Q);
-    geo::edge_projected(K, verts[0], verts[1], P, Q, level, geo::Projection::azimuthal_equidistant, with_start,
-                        [&](int, bool vis, fx::fixed X, fx::fixed Y) { put_point(out, c, m, vis, X, Y); });
-    return out + c.count;
-}
-// One coordinate of a slerp's point a P + b Q in Q16.16, rounded down (dot2 rounds to nearest:
-// a bias of half a step, about 0.002 px at 1920x1080, for three fewer additions a point), not
-// saturated, from its two products (each below 2^62 in magnitude): the sum wraps (defined, in
-// unsigned) only when all four factors are -2^31, and then leaves FixedEquidistant's domain.
-[[gnu::always_inline]] inline int64_t slerp_sum(int64_t p, int64_t q) {
-    return static_cast<int64_t>(static_cast<uint64_t>(p) + static_cast<uint64_t>(q)) >> 16;
-}
-// The slerp's points a P + b Q for the weights [ab, end) of one edge, written from `at` on
-// while FixedEquidistant shows them. Returns where it stopped: the weights of the first point
-// it leaves (or end), and the next entry. A function of its own, so that the loop's values
-// stay in registers.
-struct SlerpRunEnd {
-    const fx::fixed* ab;
-    SubPoint* at;
-};
-template <bool Flat>
-[[gnu::noinline]] SlerpRunEnd slerp_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>& P,
-                                        const geo::Vec3<fx::fixed>& Q, const fx::fixed* ab, const fx::fixed* end,
-                                        SubPoint* at) {
-    const int64_t pw = P.w.raw(), px = P.x.raw(), py = P.y.raw();
-    const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
-    const FixedEquidistant f = fe;
-    for (; ab < end; ab += 2, ++at) {
-        const int64_t a = ab[0].raw(), b = ab[1].raw();
-        if (!f.point<Flat>(slerp_sum(a * pw, b * qw), slerp_sum(a * px, b * qx), slerp_sum(a * py, b * qy), *at)) break;
+// The sphere's far side past w = -1/2 (K > 0, distance r > 2 pi / 3 sqrt K), where E(w) grows
+// without bound toward the antipode and Q16.16's w cannot tell points apart: S = |(x, y)| =
+// S_K(r) from (x, y), r = pi / sqrt K - 2 AT_K(S / (1 - w)) (the polar reading past the equator,
+// geo::arc_K, whose 1 - w in [3/2, 2] loses nothing), and the point at r along the unit direction
+// (x, y) / S. A square root from its table seed (2^-17: the direction and radius it gives are off
+// by 2^-17 of the point's distance from the centre, 0.002 px on a 1080-px disc), two
+// reciprocals and one ATf lookup: no atan2 and no division instruction. Points within 2^-10 of
+// the antipode are left to project_vec (far outside any clip circle: kAntipodeMarginPx is more
+// than 2^-10 times any scale in px).
+struct FixedFarSide {
+    int32_t cx = 0, cy = 0;  // the canvas centre, 1/256 px
+    int64_t scale = 0;       // px per unit, Q16
+    int32_t K = 0;           // Q16
+    int64_t antipode = 0;    // pi / sqrt K, Q16
+    static FixedFarSide make(const FixedEquidistant& fe, fx::fixed K) {
+        FixedFarSide f;
+        f.cx = fe.cx, f.cy = fe.cy, f.scale = fe.scale, f.K = K.raw();
+        if (K.raw() > 0) f.antipode = (geo::pi_v<fx::fixed> / sqrt(K)).raw();
+        return f;
     }
-    return {ab, at};
-}
-// Where a run of whole edges stopped: the first edge it did not finish (or the edge count), and
-// the next entry.
-struct EdgeRunEnd {
-    std::size_t e;
-    SubPoint* at;
-};
-// A body at level 2 (one slerp point per edge, its midpoint: the grid lines), edges [e, edges):
-// each edge's midpoint and end, from `at` on, while FixedEquidistant shows both and no edge is
-// antipodal.
-template <bool Flat>
-[[gnu::noinline]] EdgeRunEnd midpoint_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs,
-                                          const uint8_t* antipodal, const fx::fixed* weights, std::size_t n,
-                                          std::size_t edges, std::size_t e, SubPoint* at) {
-    const FixedEquidistant f = fe;
-    for (; e < edges; ++e, at += 2) {
-        const geo::Vec3<fx::fixed>&P = vecs[e], &Q = vecs[e + 1 == n ? 0 : e + 1];
-        const int64_t a = weights[2 * e].raw(), b = weights[2 * e + 1].raw();
-        const int64_t qw = Q.w.raw(), qx = Q.x.raw(), qy = Q.y.raw();
-        if (antipodal[e]) break;
-        if (!f.point<Flat>(slerp_sum(a * P.w.raw(), b * qw), slerp_sum(a * P.x.raw(), b * qx),
-                           slerp_sum(a * P.y.raw(), b * qy), at[0]))
-            break;
-        if (!f.point<Flat>(qw, qx, qy, at[1])) break;
+    // 2^62 / d for d > 0 of any size below 2^32, from recip_q62 on d scaled into [2^31, 2^32).
+    static uint64_t reciprocal(uint32_t d, int& shift) {
+        shift = std::countl_zero(d);
+        return fx::detail::recip_q62(d << shift);  // 2^62 / (d 2^shift)
     }
-    return {e, at};
-}
-// Whole edges [e, edges) of a body at any level: each edge's slerp points and its end, from
-// `at` on, while FixedEquidistant shows them all and no edge is antipodal. The entry it returns
-// is where the unfinished edge's entries begin: an edge it leaves halfway is done again by the
-// caller's per-edge path, whose points are the same bits. One call per body; at level 1
-// (Points = false: an edge is its end alone) no call per edge at all.
-template <bool Flat, bool Points>
-[[gnu::noinline]] EdgeRunEnd edge_run(const FixedEquidistant& fe, const geo::Vec3<fx::fixed>* vecs, const uint8_t* antipodal,
-                                      const fx::fixed* weights, std::size_t per_edge, std::size_t n, std::size_t edges,
-                                      std::size_t e, SubPoint* at) {
-    const FixedEquidistant f = fe;
-    const fx::fixed* ab = weights + e * per_edge;
-    // Edge e, ending at Q: false where it stops.
-    auto edge = [&](std::size_t e, const geo::Vec3<fx::fixed>& Q) __attribute__((always_inline)) {
-        SubPoint* p = at;
-        if constexpr (Points) {  // the edge's own points: slerp_run's loop, which keeps its values in registers
-            const fx::fixed* const end = ab + per_edge;
-            const SlerpRunEnd r = slerp_run<Flat>(f, vecs[e], Q, ab, end, at);
-            if (r.ab < end) return false;
-            ab = end, p = r.at;
-        }
-        if (!f.point<Flat>(Q.w.raw(), Q.x.raw(), Q.y.raw(), *p)) return false;
-        at = p + 1;
+    // Whether (w, x, y) lies within 2^-10 of the antipode (S < 2^-10 past the equator), where
+    // Q16.16's x and y no longer tell its direction: project_vec would put it at theta = 0, on
+    // the east rim. Such a point lies outside the clip circle (kAntipodeMarginPx inside the rim
+    // is more than 2^-10 times any scale in px) and is not shown: the polyline breaks there.
+    bool near_antipode(int64_t w, int64_t x, int64_t y) const {
+        constexpr int64_t lim = int64_t{1} << 6;  // 2^-10 in Q16
+        return K > 0 && w < 0 && x < lim && x > -lim && y < lim && y > -lim && x * x + y * y < (int64_t{1} << 12);
+    }
+    // The unit vector along (dx, dy) (any scale, not both 0) in Q30: (dx, dy) scaled to 30 bits
+    // (the table seed's square root is good to 2^-17 of its value only for such large ones),
+    // then divided by its length.
+    static void direction(int64_t dx, int64_t dy, int64_t& ux, int64_t& uy) {
+        const uint64_t m = static_cast<uint64_t>(dx < 0 ? -dx : dx) | static_cast<uint64_t>(dy < 0 ? -dy : dy);
+        const int k = 34 - std::countl_zero(m);  // the larger of |dx|, |dy| in [2^29, 2^30) once shifted
+        const int64_t hx = k >= 0 ? dx >> k : dx * (int64_t{1} << -k), hy = k >= 0 ? dy >> k : dy * (int64_t{1} << -k);
+        const uint32_t h = fx::detail::sqrt_seed(static_cast<uint64_t>(hx * hx + hy * hy));
+        int sh = 0;
+        const uint64_t r_h = reciprocal(h, sh);
+        const int64_t inv = static_cast<int64_t>(r_h << sh);  // 2^62 / h
+        ux = (hx * inv) >> 32, uy = (hy * inv) >> 32;
+    }
+    // False outside the domain: K <= 0, w >= -1/2, or within 2^-10 of the antipode. (dx, dy):
+    // (x, y) before rounding to Q16, at any scale, when the caller has it: near the antipode
+    // (x, y) is small and its rounding alone would turn the point's direction by up to
+    // 2^-17 / S (a pixel at S = 2^-8 on a 1080-px disc); the sums it was rounded from are exact
+    // to 2^-30.
+    bool point(int64_t w, int64_t x, int64_t y, SubPoint& p) const { return point(w, x, y, p, x, y); }
+    bool point(int64_t w, int64_t x, int64_t y, SubPoint& p, int64_t dx, int64_t dy) const {
+        if (K <= 0 || w >= -(int64_t{1} << 15)) return false;
+        constexpr int64_t lim = int64_t{1} << 20;  // |x|, |y| < 16 (S <= 1 / sqrt K, K >= 1/256)
+        if (x >= lim || x <= -lim || y >= lim || y <= -lim || w < -(int64_t{1} << 16)) return false;
+        const uint64_t s2 = static_cast<uint64_t>(x * x + y * y);  // Q32
+        if (s2 < (uint64_t{1} << 12)) return false;                 // S < 2^-10
+        const uint32_t s = fx::detail::sqrt_seed(s2 << 16);          // S in Q24, < 2^28
+        // t = S / (1 - w) in Q24: 1 - w in (3/2, 2] is (1 - w) 2^16 in Q16; 2^62 / (that 2^15)
+        // is 1 / (1 - w) in Q31.
+        const uint32_t d = static_cast<uint32_t>(std::min<int64_t>(((int64_t{1} << 16) - w) << 15, 0xFFFFFFFF));
+        const uint64_t inv_w = fx::detail::recip_q62(d);
+        const fx::fixed t = fx::fixed::from_raw(static_cast<int32_t>((uint64_t{s} * inv_w) >> 39));  // Q16
+        const fx::fixed u = fx::fixed::from_raw(static_cast<int32_t>((int64_t{K} * t.raw() * t.raw()) >> 32));
+        const int64_t r = antipode - 2 * int64_t{fx::mul_ATf(t, u).raw()};  // Q16
+        const int64_t R = (r * scale) >> 24;                                 // px, Q8
+        int64_t ux = 0, uy = 0;  // Q30
+        direction(dx, dy, ux, uy);
+        p = {cx + static_cast<int32_t>((ux * R) >> 30), cy - static_cast<int32_t>((uy * R) >> 30)};
         return true;
-    };
-    std::size_t stop = edges;  // the first antipodal edge from e on (antipodal: null if there is none)
-    if (antipodal)
-        for (stop = e; stop < edges && !antipodal[stop];) ++stop;
-    const std::size_t open = std::min(stop, edges < n ? edges : n - 1);  // edges that end at vecs[e + 1]
-    for (; e < open; ++e)
-        if (!edge(e, vecs[e + 1])) return {e, at};
-    if (e < stop && e < edges) {  // a closed body's last edge, which ends at vecs[0]
-        if (!edge(e, vecs[0])) return {e, at};
-        ++e;
     }
-    return {e, at};
+};
+
+// What FixedEquidistant leaves: project_vec, out of the hot path.
+[[gnu::noinline]] inline Spot general_spot(fx::fixed K, const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>& v) {
+    const geo::ProjectedPoint<fx::fixed> pp = geo::project_vec(K, v, geo::Projection::azimuthal_equidistant);
+    if (!pp.visible) return {};
+    return spot_at(m, to_pixels(geo::ScreenPoint<fx::fixed>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
 }
-// The fixed engine's equidistant view of one body (edges > 0), from its vertices' 3-vectors
-// and the shape cache's slerp weights: each point's 3-vector as the slerp's 64-bit sums,
-// straight to sub-pixels (FixedEquidistant), general_point for the rest. Returns the count.
-template <bool Flat, class Cache>
-[[gnu::noinline]] std::size_t fixed_equidistant_points(fx::fixed K, const Cache& sh, const FixedEquidistant& fe0,
-                                                       const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>* vecs,
-                                                       geo::Polar<fx::fixed>* verts, std::size_t n, std::size_t edges,
-                                                       int level, SubPoint* out) {
-    using fx::fixed;
-    const FixedEquidistant fe = fe0;
-    SubPoint* at = out;  // the next entry
-    auto vertex = [&](const geo::Vec3<fixed>& v) __attribute__((always_inline)) {
-        if (fe.point<Flat>(v.w.raw(), v.x.raw(), v.y.raw(), *at))
-            ++at;
-        else
-            at = general_point(K, m, v, out, at);
-    };
-    if (!sh.antipodal[0]) vertex(vecs[0]);  // else antipodal_points writes it
-    for (std::size_t e = 0; e < edges; ++e) {
-        if (level == 2) {  // grid lines: every edge in one call while all is shown
-            const EdgeRunEnd r = midpoint_run<Flat>(fe, vecs, sh.antipodal.data(), sh.weights.data(), n, edges, e, at);
-            e = r.e, at = r.at;
-        } else {  // every edge in one call while all is shown
-            const uint8_t* const antipodal = sh.any_antipodal ? sh.antipodal.data() : nullptr;
-            const EdgeRunEnd r = level == 1 ? edge_run<Flat, false>(fe, vecs, antipodal, sh.weights.data(), 0, n, edges, e, at)
-                                         : edge_run<Flat, true>(fe, vecs, antipodal, sh.weights.data(), sh.per_edge, n, edges, e, at);
-            e = r.e, at = r.at;
-        }
-        if (e == edges) break;
-        const std::size_t f = e + 1 == n ? 0 : e + 1;
-        const geo::Vec3<fixed>&P = vecs[e], &Q = vecs[f];
-        if (sh.antipodal[e]) {
-            at = antipodal_points(K, m, P, Q, level, e == 0, verts, out, at);
-            continue;
-        }
-        const fixed* ab = sh.weights_of(e);  // (at level 2, an edge midpoint_run left)
-        const fixed* const end = ab + 2 * (level - 1);
-        for (;;) {
-            const SlerpRunEnd r = slerp_run<Flat>(fe, P, Q, ab, end, at);
-            at = r.at;
-            if (r.ab >= end) break;
-            at = general_slerp_point(K, m, r.ab[0], r.ab[1], P, Q, out, at);  // a point slerp_run leaves
-            ab = r.ab + 2;
-        }
-        vertex(Q);
+
+// edge_curve's evaluator for the fixed engine's equidistant view. Flat: K = 0 (FixedEquidistant).
+template <bool Flat>
+struct FixedEquidistantEval {
+    using Math = SlerpMath<fx::fixed>;
+    FixedEquidistant fe;
+    fx::fixed K;
+    const ScreenMap<fx::fixed>& m;
+    int64_t pw = 0, px = 0, py = 0, qw = 0, qx = 0, qy = 0;  // the edge's ends, Q16.16
+
+    void ends(const geo::Vec3<fx::fixed>& p, const geo::Vec3<fx::fixed>& q) {
+        pw = p.w.raw(), px = p.x.raw(), py = p.y.raw(), qw = q.w.raw(), qx = q.x.raw(), qy = q.y.raw();
     }
-    return static_cast<std::size_t>(at - out);
-}
+    FixedFarSide far = FixedFarSide::make(fe, K);
+
+    Spot vertex(const geo::Vec3<fx::fixed>& v) const {
+        SubPoint s;
+        if (fe.point<Flat>(v.w.raw(), v.x.raw(), v.y.raw(), s)) return spot_at(m, s);
+        return other(v.w.raw(), v.x.raw(), v.y.raw(), v, v.x.raw(), v.y.raw());
+    }
+    // Past FixedEquidistant's domain: the far side, else project_vec.
+    [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const geo::Vec3<fx::fixed>& v, int64_t dx,
+                                 int64_t dy) const {
+        SubPoint s;
+        if (far.point(w, x, y, s, dx, dy)) return spot_at(m, s);
+        if (far.near_antipode(w, x, y)) return {};
+        return general_spot(K, m, v);
+    }
+    // a P + b Q, without overflow: for K <= 0 the weights lie in [0, 1] (Q30) and every product
+    // below 2^61; for K > 0 they lie in [0, 4] (the cache walks longer edges: SlerpMath::too_long)
+    // and the coordinates, C_K and S_K, below 1 / sqrt K <= 256 (Q16.16: 2^24), the products below
+    // 2^56.
+    Spot point(int64_t a, int64_t b) const {
+        constexpr int64_t half = int64_t{1} << (Math::kFrac - 1);
+        const int64_t X = a * px + b * qx, Y = a * py + b * qy;
+        const int64_t w = (a * pw + b * qw + half) >> Math::kFrac, x = (X + half) >> Math::kFrac, y = (Y + half) >> Math::kFrac;
+        SubPoint s;
+        if (fe.point<Flat>(w, x, y, s)) return spot_at(m, s);
+        auto sat = [](int64_t v) { return fx::fixed::from_raw(fx::detail::saturate32(v)); };
+        return other(w, x, y, {sat(w), sat(x), sat(y)}, X, Y);
+    }
+};
 
 }  // namespace noneuclid::render::detail

@@ -262,7 +262,7 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
             if (!f.reaches(k, span.top, span.bottom)) continue;
             BandEntry& e = list[k][listed[k]++];
             e.top = span.top, e.bottom = span.bottom, e.count = static_cast<uint32_t>(n), e.idx = static_cast<uint32_t>(idx);
-            e.points = pts, e.color = body_color(b), e.fill = fj;
+            e.points = pts, e.color = body_color(b, o), e.fill = fj;
             e.ready.store(gen, std::memory_order_release);
         }
         arena += ParallelScratchBase::arena_step(n);
@@ -279,7 +279,7 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
 template <class W>
 void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
                    ParallelScratch<typename W::scalar>& s, bool backdrop) {
-    if (backdrop) draw_backdrop(c, m, world.R, o);
+    if (backdrop) draw_backdrop(c, m, o);
     s.fill.begin_frame(c);
     const std::size_t nb = std::min(s.bodies, world.bodies.size());
     for (std::size_t i = 0; i < nb; ++i) {
@@ -288,7 +288,7 @@ void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::
         if (const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height())) fill_rows(c, *j, 0, c.height(), s.fill.work[0]);
         const std::size_t n =
             body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
-        draw_screen_points(c, s.points.data(), n, body_color(b), LineStyle{o.antialias, o.line_width});
+        draw_screen_points(c, s.points.data(), n, body_color(b, o), LineStyle{o.antialias, o.line_width});
     }
 }
 
@@ -301,7 +301,7 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
                 WorkerPool& pool, bool backdrop = true) {
     using T = typename W::scalar;
     using clock = std::chrono::steady_clock;
-    const ScreenMap<T> m = ScreenMap<T>::of(c, world.R);
+    const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
     const int threads = pool.size();
     if (threads > kMaxBandThreads || c.height() < threads) return detail::draw_unbanded(c, world, m, o, s, backdrop);
     const LineStyle line{o.antialias, o.line_width};
@@ -309,7 +309,7 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
     detail::start_frame(s, c.height(), threads, line, bands);
     bands.width = c.width(), bands.height = c.height();
     s.fill.begin_frame(c);
-    const detail::BandRaster raster{c, limit_circle(m, world.R), o, backdrop, line, s.fill.work.data()};
+    const detail::BandRaster raster{c, limit_circle(m), o, backdrop, line, s.fill.work.data()};
     auto job = [&](int t) {
         const clock::time_point started = clock::now();
         detail::geometry_of_thread(world, m, o, s, bands, t);

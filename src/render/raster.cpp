@@ -95,6 +95,7 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         const int32_t m = row_margin(style);
         cut = (Y0 < Y1 ? Y0 : Y1) - m < int64_t{p.row0} * kSub || (Y0 < Y1 ? Y1 : Y0) + m >= int64_t{p.row1} * kSub;
     }
+    if (!thin_line && !style.antialias) return capsule_line(p, u0, v0, u1, v1, style.width);
     if (!thin_line) return wide_line(p, u0, v0, u1, v1, style.width, style.antialias, cut);
     if constexpr (to_canvas) {
         constexpr int64_t lim = int64_t{1} << 21;  // thin32's bound
@@ -110,6 +111,20 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
         }
     }
     thin(p, u0, v0, u1, v1, cut);
+}
+
+// The join at b of the segments a -> b -> c, for thin aliased lines (bands cover their joins).
+// Where both segments step along the same axis the same way, the last column of one and the
+// first of the other are neighbours on either side of b, and one of them is within a pixel of
+// it. Otherwise (a fold back, or a turn across a diagonal from x-major to y-major) both may stop
+// up to a pixel short of b along their own axes, leaving b up to 1.8 px from the nearest pixel:
+// there b's own pixel is plotted too (Plotter::join).
+template <class P>
+void sharp_join(P& p, SubPoint a, SubPoint b, SubPoint c, bool closing = false) {
+    const int64_t ux = int64_t{b.x} - a.x, uy = int64_t{b.y} - a.y, vx = int64_t{c.x} - b.x, vy = int64_t{c.y} - b.y;
+    const bool ax = (ux < 0 ? -ux : ux) >= (uy < 0 ? -uy : uy), bx = (vx < 0 ? -vx : vx) >= (vy < 0 ? -vy : vy);
+    if (ax != bx || ux * vx + uy * vy < 0)
+        p.join(static_cast<int>(floor_sub<int64_t>(b.x)), static_cast<int>(floor_sub<int64_t>(b.y)), closing);
 }
 
 template <class P>
@@ -154,20 +169,23 @@ template <class Sink>
         const int32_t in_hi = p.row1 * kSub - m;
         span = in_hi > in_lo ? static_cast<uint32_t>(in_hi - in_lo) : 0;
     }
+    const bool thin_style = !style.antialias && style.width <= kSub;
+    if (!closed && n > 1) end_point(p, points[0], style);
     for (int i = 0; i + 1 < n; ++i) {
         const SubPoint a = points[i], b = points[i + 1];
+        bool done = false;
         if constexpr (requires { sink.base; }) {
             if (fast && static_cast<uint32_t>(a.x) < Wi && static_cast<uint32_t>(b.x) < Wi &&
                 static_cast<uint32_t>(a.y) - static_cast<uint32_t>(in_lo) < span &&
-                static_cast<uint32_t>(b.y) - static_cast<uint32_t>(in_lo) < span) {
-                thin_inside(p, a, b);
-                continue;
-            }
+                static_cast<uint32_t>(b.y) - static_cast<uint32_t>(in_lo) < span)
+                thin_inside(p, a, b), done = true;
         }
-        if (reaches(a, b)) segment(p, a, b, style);
+        if (!done && reaches(a, b)) segment(p, a, b, style);
+        if (thin_style && (i + 2 < n || closed)) sharp_join(p, a, b, points[i + 2 < n ? i + 2 : 0]);
     }
     if (closed && n > 1) {
         if (reaches(points[n - 1], points[0])) segment(p, points[n - 1], points[0], style);
+        if (thin_style) sharp_join(p, points[n - 1], points[0], points[1], true);
     } else {
         end_point(p, points[n - 1], style);
     }
@@ -185,20 +203,23 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
         small = !style.antialias && style.width <= kSub && sink.width() <= kMaxSide32 && sink.height() <= kMaxSide32;
         Wi = static_cast<uint32_t>(sink.width()) * kSub, Hi = static_cast<uint32_t>(sink.height()) * kSub;
     }
+    const bool thin_style = !style.antialias && style.width <= kSub;
+    if (!closed && n > 1) end_point(p, points[0], style);
     for (int i = 0; i + 1 < n; ++i) {
         const SubPoint a = points[i], b = points[i + 1];
+        bool done = false;
         if constexpr (requires { sink.base; }) {
-            if (small && both_on(a, b, Wi, Hi)) {
-                thin_inside(p, a, b);
-                continue;
-            }
+            if (small && both_on(a, b, Wi, Hi)) thin_inside(p, a, b), done = true;
         }
-        segment(p, a, b, style);
+        if (!done) segment(p, a, b, style);
+        if (thin_style && (i + 2 < n || closed)) sharp_join(p, a, b, points[i + 2 < n ? i + 2 : 0]);
     }
-    if (closed && n > 1)
+    if (closed && n > 1) {
         segment(p, points[n - 1], points[0], style);
-    else
+        if (thin_style) sharp_join(p, points[n - 1], points[0], points[1], true);
+    } else {
         end_point(p, points[n - 1], style);
+    }
 }
 
 }  // namespace
@@ -206,19 +227,20 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
 SubPoint to_sub(double x, double y) { return to_sub_impl(x, y); }
 
 template <int Bpp>
-void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
+void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_ends, RowRange rows) {
     const CanvasSink<Bpp> sink(c, color);
     Plotter<CanvasSink<Bpp>> p(sink, rows);
     if (p.row0 >= p.row1) return;
+    if (plot_ends) end_point(p, a, style);
     segment(p, a, b, style);
-    if (plot_end) end_point(p, b, style);
+    if (plot_ends) end_point(p, b, style);
 }
 
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_end, RowRange rows) {
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_ends, RowRange rows) {
     switch (c.format().bytes_per_pixel()) {
-        case 2: return line_in<2>(c, a, b, color, style, plot_end, rows);
-        case 3: return line_in<3>(c, a, b, color, style, plot_end, rows);
-        default: return line_in<4>(c, a, b, color, style, plot_end, rows);
+        case 2: return line_in<2>(c, a, b, color, style, plot_ends, rows);
+        case 3: return line_in<3>(c, a, b, color, style, plot_ends, rows);
+        default: return line_in<4>(c, a, b, color, style, plot_ends, rows);
     }
 }
 

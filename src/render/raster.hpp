@@ -17,8 +17,12 @@
 //   algorithm is the special case of a fixed unit interval). Coverage along a line sums to
 //   its length times its width. Blended in 8-bit per channel, in any pixel format.
 // - Thick aliased lines: the same band, filling the pixels whose centre it covers.
-// - Polylines do not plot a shared end point twice: each segment is half-open, and the last
-//   point of an open polyline is plotted once at the end.
+// - Polylines do not plot a shared end point twice: each segment is half-open. Thin aliased
+//   polylines also plot, once each, the pixels of an open polyline's two end points and of
+//   each join where the segments do not step along the same axis the same way (a fold back, a
+//   turn across a diagonal), where both half-open segments could stop up to a pixel short of
+//   it. Every point of a thin polyline is then within 1.12 px (sqrt 1.25) of a plotted
+//   pixel's centre.
 // - Row bands (RowRange): every function can be told to write only rows [y0, y1). It writes
 //   exactly the pixels (and, anti-aliased, the same blends in the same order) that the whole
 //   line writes in those rows, and nothing else: clipping still uses the whole canvas, and the
@@ -68,9 +72,9 @@ constexpr int32_t row_margin(LineStyle style) {
     return (style.antialias || style.width > kSub ? style.width : kSub) + 8;
 }
 
-// One segment from a to b. `plot_end` adds the end point's own pixel (the half-open rule
-// leaves it out, which is what polylines want).
-void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_end = true,
+// One segment from a to b. `plot_ends` adds the end points' own pixels, as an open polyline's
+// (the half-open rule may leave them out; without it the segment is one piece of a polyline).
+void draw_line(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style = {}, bool plot_ends = true,
                RowRange rows = {});
 
 // A polyline through n points (closed: back to the first), no pixel of a shared end point

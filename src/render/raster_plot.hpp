@@ -40,11 +40,35 @@ struct CanvasSink {
     std::ptrdiff_t stride;
     bool fast565, fast8888;
     uint32_t rs, gs, bs, fill;  // fast8888: the channels' shifts, and the bits pack() sets besides
+    uint32_t channels;          // fast8888: the channels' bits
+    uint64_t lanes;             // fast8888: the colour's word, a byte to each 16-bit lane (spread)
+    uint64_t lanes565;          // fast565: the colour's r, g and b in lanes 0, 1 and 2
     CanvasSink(const Canvas& canvas, Rgb col)
         : c(canvas), color(col), word(canvas.format().pack(col)), base(canvas.row(0)), stride(canvas.stride()),
           fast565(canvas.format().is_rgb565()), fast8888(canvas.format().byte_channels()),
           rs(canvas.format().red.offset), gs(canvas.format().green.offset), bs(canvas.format().blue.offset),
-          fill(canvas.format().opaque_bits()) {}
+          fill(canvas.format().opaque_bits()), channels(0xFFu << rs | 0xFFu << gs | 0xFFu << bs), lanes(spread(word)),
+          lanes565(color.r | uint64_t{color.g} << 16 | uint64_t{color.b} << 32) {}
+    // The four bytes of a word, each in a 16-bit lane of its own, and back.
+    static uint64_t spread(uint32_t w) {
+        uint64_t x = w;
+        x = (x | x << 16) & 0x0000FFFF0000FFFFull;
+        return (x | x << 8) & 0x00FF00FF00FF00FFull;
+    }
+    static uint32_t gather(uint64_t x) {
+        x = (x | x >> 8) & 0x0000FFFF0000FFFFull;
+        return static_cast<uint32_t>(x | x >> 16);
+    }
+    // Canvas::blend's d + (s - d) a / 255 rounded to the nearest level, on four 8-bit channels
+    // in 16-bit lanes at once (so that every format holds the same colours), as
+    // (s a + d (255 - a)) / 255 rounded by div255_rounded: the same, since 255 is odd and
+    // (s - d) a / 255 is never a half, whichever way a tie would go. Never beyond s. No lane
+    // carries into the next: s a + d (255 - a) + 128 plus its top byte is at most 65407.
+    static uint64_t mix_lanes(uint64_t S, uint64_t D, uint32_t a) {
+        constexpr uint64_t LFF = 0x00FF00FF00FF00FFull;
+        const uint64_t t = S * a + D * (255 - a) + 0x0080008000800080ull;
+        return ((t + ((t >> 8) & LFF)) >> 8) & LFF;  // div255_rounded
+    }
     int width() const { return c.width(); }
     int height() const { return c.height(); }
     uint8_t* at(int x, int y) const { return base + y * stride + x * Bpp; }
@@ -60,29 +84,35 @@ struct CanvasSink {
             p[0] = static_cast<uint8_t>(word), p[1] = static_cast<uint8_t>(word >> 8), p[2] = static_cast<uint8_t>(word >> 16);
         }
     }
-    // dst + (src - dst) * a / 255 per channel, rounded to the nearest level (half away from zero):
-    // Canvas::blend's result, so that every format holds the same colours, and never beyond src.
-    // Without a branch or a division: |src - dst| by its sign mask m, then div255_rounded.
-    static uint32_t mix8(uint32_t s, uint32_t d, uint32_t a) {
-        const int32_t diff = static_cast<int32_t>(s) - static_cast<int32_t>(d), m = diff >> 31;
-        const int32_t q = static_cast<int32_t>(div255_rounded(static_cast<uint32_t>((diff ^ m) - m) * a));
-        return static_cast<uint32_t>(static_cast<int32_t>(d) + ((q ^ m) - m));
+    // Whether blend_at can blend this canvas's pixels: 32-bit words of byte channels, or RGB565.
+    bool direct() const {
+        if constexpr (Bpp == 4) return fast8888;
+        if constexpr (Bpp == 2) return fast565;
+        return false;
+    }
+    // The pixel at p blended with coverage alpha in 1..254, for a direct() canvas: Canvas::blend's
+    // unpack, mix and pack in integers (RGB565's channels widened with their top bits replicated).
+    [[gnu::always_inline]] void blend_at(uint8_t* p, uint32_t a) const {
+        if constexpr (Bpp == 4) {
+            uint32_t d;
+            std::memcpy(&d, p, 4);
+            const uint32_t out = fill | (gather(mix_lanes(lanes, spread(d), a)) & channels);  // pack({r, g, b})
+            std::memcpy(p, &out, 4);
+        } else if constexpr (Bpp == 2) {
+            uint16_t d;
+            std::memcpy(&d, p, 2);
+            const uint64_t r5 = d >> 11, g6 = (d >> 5) & 0x3F, b5 = d & 0x1F;
+            const uint64_t D = (r5 << 3 | r5 >> 2) | (g6 << 2 | g6 >> 4) << 16 | (b5 << 3 | b5 >> 2) << 32;
+            const uint64_t m = mix_lanes(lanes565, D, a);  // r, g, b in lanes 0, 1, 2
+            const uint16_t out = static_cast<uint16_t>((m & 0xF8) << 8 | (m >> 16 & 0xFC) << 3 | (m >> 32 & 0xFF) >> 3);
+            std::memcpy(p, &out, 2);
+        } else {
+            (void)p, (void)a;
+        }
     }
     void blend(int x, int y, int alpha) const {
         if (alpha >= 255) return opaque(x, y);
-        if constexpr (Bpp == 4) {
-            if (fast8888) {
-                uint8_t* p = at(x, y);
-                uint32_t d;
-                std::memcpy(&d, p, 4);
-                const uint32_t a = static_cast<uint32_t>(alpha);
-                const uint32_t r = mix8(color.r, (d >> rs) & 0xFF, a), g = mix8(color.g, (d >> gs) & 0xFF, a),
-                               b = mix8(color.b, (d >> bs) & 0xFF, a);
-                const uint32_t out = fill | r << rs | g << gs | b << bs;  // pack({r, g, b})
-                std::memcpy(p, &out, 4);
-                return;
-            }
-        }
+        if (direct()) return blend_at(at(x, y), static_cast<uint32_t>(alpha));
         c.blend(x, y, color, alpha);
     }
 };
@@ -97,14 +127,18 @@ struct VisitSink {
 };
 
 // Sends pixels to the sink, skipping a pixel equal to the one just written (shared polyline
-// points) and anything outside the canvas or the row band [row0, row1).
+// points) or to a sharp join's pixel just written (join()), and anything outside the canvas or
+// the row band [row0, row1).
 template <class Sink>
 struct Plotter {
     const Sink& sink;
     int row0, row1;     // the rows written: [row0, row1), within the canvas
     bool banded;        // [row0, row1) is less than the whole canvas
     bool swap = false;  // (u, v) are (y, x)
-    int last_x = -1 << 30, last_y = -1 << 30;
+    static constexpr int kNone = -1 << 30;
+    int last_x = kNone, last_y = kNone;
+    int join_x = kNone, join_y = kNone;    // a sharp join's pixel, until the next segment's first
+    int first_x = kNone, first_y = kNone;  // the first pixel written (a closed polyline's last join)
 
     Plotter(const Sink& s, RowRange rows)
         : sink(s), row0(rows.y0 > 0 ? rows.y0 : 0), row1(rows.y1 < s.height() ? rows.y1 : s.height()),
@@ -112,12 +146,30 @@ struct Plotter {
 
     template <class I>
     bool inside(I x, I y) const { return x >= 0 && y >= row0 && x < sink.width() && y < row1; }
+    // Whether (x, y), a segment's first pixel, is new: not the last pixel written nor a sharp
+    // join's pixel written just before; the join is forgotten either way.
+    bool fresh(int x, int y) {
+        const bool seen = (x == last_x && y == last_y) || (x == join_x && y == join_y);
+        join_x = kNone;
+        return !seen;
+    }
     template <class I>
     void opaque(I u, I v) {
         const I x = swap ? v : u, y = swap ? u : v;
-        if (!inside(x, y) || (x == last_x && y == last_y)) return;
+        if (!inside(x, y) || !fresh(static_cast<int>(x), static_cast<int>(y))) return;
         sink.opaque(static_cast<int>(x), static_cast<int>(y));
         last_x = static_cast<int>(x), last_y = static_cast<int>(y);
+        if (first_x == kNone) first_x = last_x, first_y = last_y;
+    }
+    // The pixel holding a polyline's point where it turns by more than 90 degrees: the
+    // half-open segments on either side may both stop short of it (at a fold back, by up to a
+    // pixel). Written unless it is the last pixel written (or, `closing`: the first); the last
+    // pixel stays the previous segment's, and the next segment's first pixel is checked against
+    // both.
+    void join(int x, int y, bool closing) {
+        if (!inside(x, y) || (x == last_x && y == last_y) || (closing && x == first_x && y == first_y)) return;
+        sink.opaque(x, y);
+        join_x = x, join_y = y;
     }
     void blend(int64_t u, int64_t v, int alpha) {
         const int64_t x = swap ? v : u, y = swap ? u : v;

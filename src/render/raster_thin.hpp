@@ -149,7 +149,10 @@ void thin32(Plotter<CanvasSink<Bpp>>& p, int32_t u0, int32_t v0, int32_t u1, int
     // canvas check).
     if constexpr (Inside) {
         const int32_t x = p.swap ? row : u, y = p.swap ? u : row;
-        if (x != p.last_x || y != p.last_y) sink.opaque(x, y);
+        if (p.fresh(x, y)) {
+            sink.opaque(x, y);
+            if (p.first_x == p.kNone) p.first_x = x, p.first_y = y;
+        }
     } else {
         p.opaque(u, row);
     }

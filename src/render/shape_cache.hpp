@@ -1,9 +1,11 @@
-// What drawing a rigid body needs that changes only with K and its shape: each vertex as its local 3-vector
-// about the centre, and each edge's slerp weights (a rigid motion keeps the edge's length, so
-// they come from the local polar vertices). One per body, owned by the drawing's scratch
+// What drawing a rigid body needs that changes only with K and its shape: each vertex as its
+// local 3-vector about the centre, and each edge's length with the first halving weight of its
+// adaptive tessellation (render/edge_curve.hpp; a rigid motion keeps the edge's length, so it
+// comes from the local polar vertices). One per body, owned by the drawing's scratch
 // (DrawScratch, ParallelScratch), made for the body when the scratch is prepared (this
 // allocates), and refreshed in place, without allocating, when K differs from the K it was
-// last refreshed at or the body took a new shape of as many vertices (world::Body::shape). The threaded frame hands each body to one thread, which alone refreshes
+// last refreshed at or the body took a new shape of as many vertices (world::Body::shape). The
+// threaded frame hands each body to one thread, which alone refreshes
 // that body's cache: no cache is written by two threads at once.
 #pragma once
 
@@ -13,27 +15,36 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
+#include "render/edge_curve.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::render {
 
 template <class T>
 struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be another thread's)
+    using Math = SlerpMath<T>;
     T K{};
     uint32_t shape = 0;  // the body's shape count it was made for (world::Body::shape)
     bool valid = false;
     std::vector<geo::Vec3<T>> local;  // per vertex
     std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
-    std::vector<T> weights;           // per edge, (level - 1) pairs (a_k, b_k): weights_of(e)
-    std::vector<uint8_t> antipodal;   // per edge: no weights (ends antipodal on the sphere)
+    // Per edge: its length, u = K (d/2)^2 and the halving weight h = half(u) of edge_curve, and
+    // whether it is walked (its ends antipodal on the sphere, or too long for the weights:
+    // body_screen_points cuts it in two first).
+    std::vector<T> length;
+    std::vector<typename Math::U> u;
+    std::vector<typename Math::W> h;
+    std::vector<uint8_t> walked;
     // Set by make, whatever K: each vertex's (cos phi, sin phi), each edge's
-    // sine_of_half(phi1 - phi2).
+    // sine_of_half(phi1 - phi2), and whether its ends lie on one geodesic through the body's
+    // centre (a grid line's edges: its vertices lie on one line through it), on the same side
+    // (kSameSide: d = |rho1 - rho2|) or on opposite sides (kOppositeSides: d = rho1 + rho2), for
+    // every K, with nothing computed.
+    enum Radial : uint8_t { kNotRadial, kSameSide, kOppositeSides };
     std::vector<T> cos_phi, sin_phi;
     std::vector<geo::HalfSine<T>> half_sine;
-    std::size_t per_edge = 0;     // 2 (level - 1): the weights of one edge
-    bool any_antipodal = false;  // whether any edge is antipodal
-    T* weights_of(std::size_t e) { return weights.data() + e * per_edge; }
-    const T* weights_of(std::size_t e) const { return weights.data() + e * per_edge; }
+    std::vector<uint8_t> radial;
+    bool all_radial = false;
 
     // Sized for body b, its parts that do not depend on K set; not valid until refreshed.
     void make(const world::Body<T>& b) {
@@ -41,11 +52,11 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
         valid = false;
         local.assign(n, {});
         root.assign(n, T{});
-        antipodal.assign(edges, 0);
-        cos_phi.assign(n, T{}), sin_phi.assign(n, T{}), half_sine.assign(edges, {});
-        const int level = b.desc->tessellation;
-        per_edge = static_cast<std::size_t>(level > 1 ? 2 * (level - 1) : 0);
-        weights.assign(edges * per_edge, T{});
+        length.assign(edges, T{});
+        u.assign(edges, {});
+        h.assign(edges, {});
+        walked.assign(edges, 0);
+        cos_phi.assign(n, T{}), sin_phi.assign(n, T{}), half_sine.assign(edges, {}), radial.assign(edges, kNotRadial);
         set_angles(b);
     }
     // The parts that depend on the shape alone, in place (a game's asteroid takes a new shape
@@ -55,8 +66,16 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
         using geo::sine_of_half;
         const std::size_t n = b.local.size();
         for (std::size_t i = 0; i < n; ++i) cos_phi[i] = cos(b.local[i].theta), sin_phi[i] = sin(b.local[i].theta);
-        for (std::size_t e = 0; e < half_sine.size(); ++e)
-            half_sine[e] = sine_of_half(b.local[e].theta - b.local[(e + 1) % n].theta);
+        all_radial = true;
+        for (std::size_t e = 0; e < half_sine.size(); ++e) {
+            const geo::Polar<T>&p = b.local[e], &q = b.local[(e + 1) % n];
+            half_sine[e] = sine_of_half(p.theta - q.theta);
+            const T turn = p.theta > q.theta ? p.theta - q.theta : q.theta - p.theta;
+            radial[e] = p.r == T(0) || q.r == T(0) || turn == geo::pi_v<T> ? kOppositeSides
+                        : turn == T(0)                                     ? kSameSide
+                                                                           : kNotRadial;
+            all_radial = all_radial && radial[e] != kNotRadial;
+        }
         shape = b.shape, valid = false;
     }
 
@@ -65,20 +84,26 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     const ShapeCache& refresh(T curvature, const world::Body<T>& b) {
         if (shape != b.shape) set_angles(b);
         if (valid && K == curvature) return *this;
-        const std::size_t n = b.local.size(), edges = antipodal.size();
-        const int level = b.desc->tessellation;
+        const std::size_t n = b.local.size(), edges = walked.size();
         for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
             const T rho = b.local[i].r, s = geo::S_K(curvature, rho);
             local[i] = {geo::C_K(curvature, rho), s * cos_phi[i], s * sin_phi[i]};
-            root[i] = geo::clamped_root(s);
+            if (!all_radial) root[i] = geo::clamped_root(s);
         }
-        any_antipodal = false;
+        using geo::Sf;  // and fx::Sf by ADL for fixed
         for (std::size_t e = 0; e < edges; ++e) {
             const std::size_t f = (e + 1) % n;
-            // geo::distance(K, b.local[e], b.local[f]), bit for bit, from the kept parts.
-            const T d = geo::distance_from(curvature, b.local[e].r, b.local[f].r, root[e], root[f], half_sine[e]);
-            antipodal[e] = !geo::slerp_weights(curvature, d, level, weights_of(e));
-            any_antipodal = any_antipodal || antipodal[e];
+            const T r1 = b.local[e].r, r2 = b.local[f].r;
+            // geo::distance(K, b.local[e], b.local[f]), from the kept parts (bit for bit), or exactly.
+            const T d = radial[e] == kSameSide        ? (r1 > r2 ? r1 - r2 : r2 - r1)
+                        : radial[e] == kOppositeSides ? r1 + r2
+                                                      : geo::distance_from(curvature, r1, r2, root[e], root[f], half_sine[e]);
+            length[e] = d;
+            u[e] = Math::u_of(curvature, d);
+            // (Sf only where antipodal_edge needs it: K d^2 > 2.)
+            walked[e] = Math::too_long(u[e]) ||
+                        (curvature * d * d > T(2) && geo::antipodal_edge(curvature, d, Sf(curvature * d * d)));
+            h[e] = walked[e] ? typename Math::W{} : Math::half(u[e]);
         }
         K = curvature, valid = true;
         return *this;

@@ -13,9 +13,9 @@
 //   {"over":1230} (the final score)
 // Angles in degrees in (-180, 180]; lengths in world units. Each edge lists its points from one
 // vertex to the next, both ends included (tessellation + 1 points); "screen" holds the same
-// points in pixels with the same nesting, for a canvas of the given size: the limit circle
-// R fills the smaller side, centred, through the given projection; a point the projection
-// cannot show is null.
+// points in pixels with the same nesting, for a canvas of the given size: the disc the
+// projection shows (geo::shown_radius: R, or less on the sphere) fills the smaller side,
+// centred, through the given projection; a point the projection cannot show is null.
 #pragma once
 
 #include <cmath>
@@ -101,7 +101,7 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
     using T = typename W::scalar;
     using detail::num;
     const double K = static_cast<double>(world.K), R = static_cast<double>(world.R);
-    const double scale = 0.5 * std::min(o.width, o.height) / R;
+    const double scale = 0.5 * std::min(o.width, o.height) / geo::rim_rho(K, R, o.projection);
     const double cx = 0.5 * o.width, cy = 0.5 * o.height;
     out += "{\"frame\":";
     out += std::to_string(world.frame);

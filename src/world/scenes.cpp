@@ -72,29 +72,32 @@ void fig1(Scene& s) {
     s.bodies.push_back(place(polygon("circle", 24, 0.2, 0, {230, 120, 230}), 0.3, 60, 0, 0.15, 200, 0));
     s.bodies.push_back(place(polygon("star", 5, 0.3, 90, {255, 255, 255}), 2.0, 300, 0, 0.2, 120, 45));
 }
-// Motion along the geodesic orthogonal to the direction `deg` at distance 1 from O.
-void orthogonal_motion(Scene& s, double deg) {
+// Motion from the point at distance 1 east of O along the geodesic leaving it at `heading`
+// (90: orthogonal to the radius, figure 14; 45, figure 15).
+void geodesic_motion(Scene& s, double heading) {
     s.curvature = -1;
     axis_grid(s);
     SceneBody b = polygon("square", 4, 0.15, 45, {255, 200, 64});
-    s.bodies.push_back(place(b, 1.0, deg, deg + 90, 0.4, deg + 90, 0));
+    s.bodies.push_back(place(b, 1.0, 0, heading, 0.4, heading, 0));
 }
 void fig16(Scene& s) {
     s.curvature = -1;
     axis_grid(s);
-    // The paper's square: vertices (90, pi/8), (90, 3pi/8), (90, 5pi/8), (90, 7pi/8), taken as
-    // written (local rho in the paper's pixels, phi in radians), spinning about its centre.
+    // The paper's square, spinning about its centre: its text says an equally spaced square,
+    // its vertex list (90, pi/8), (90, 3pi/8), (90, 5pi/8), (90, 7pi/8) spans 135 degrees; the
+    // text is followed: phi = pi/8 + k pi/2 (local rho in the paper's pixels).
     SceneBody b;
     b.name = "square";
     b.color = {255, 200, 64};
-    for (double k : {1.0, 3.0, 5.0, 7.0}) b.vertices.push_back({90 * kPaperPixel, k * 22.5});
+    for (double k : {1.0, 5.0, 9.0, 13.0}) b.vertices.push_back({90 * kPaperPixel, k * 22.5});
     b.tessellation = 16;
     s.bodies.push_back(place(b, 1.0, 0, 0, 0, 0, 45));
 }
 void fig17(Scene& s) {
     s.curvature = -1;
     s.sweep_rate = 0.4;  // -1 to +1 in 5 s, and back
-    axis_grid(s);
+    std::string unused;
+    add_axis_grid(s, 1.0, s.limit_radius, 0.25, kGrid, unused);  // sparser: its time-lapse lays five over each other
     s.bodies.push_back(place(polygon("square", 4, 0.2, 45, {255, 200, 64}), 1.5, 180, 0, 0.3, 0, 0));
 }
 void kiosk(Scene& s) {
@@ -251,8 +254,8 @@ bool builtin_scene(const std::string& name, const SceneParams& params, Scene& ou
     else if (name == "asteroids") asteroids(out);
     else if (name == "textured") textured(out);
     else if (name == "fig1") fig1(out);
-    else if (name == "fig14") orthogonal_motion(out, 0);
-    else if (name == "fig15") orthogonal_motion(out, 45);
+    else if (name == "fig14") geodesic_motion(out, 90);
+    else if (name == "fig15") geodesic_motion(out, 45);
     else if (name == "fig16") fig16(out);
     else if (name == "fig17") fig17(out);
     else if (name == "stress") stress(out, params);

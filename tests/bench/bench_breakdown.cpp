@@ -52,7 +52,7 @@ struct Setup {
           front(back.size()),
           c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f),
           fb(front.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f),
-          m(render::ScreenMap<T>::of(c, wd.R)) {
+          m(render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection)) {
         scratch.prepare(wd);
         for (int i = 0; i < 30; ++i) wd.step(T(1.0 / 60));
         render::draw_world(c, wd, o, scratch);
@@ -73,7 +73,7 @@ void stage(benchmark::State& st, const std::string& which, int w, int h, render:
     const T dt(1.0 / 60);
     for (auto _ : st) {
         if (which == "step") s.wd.step(dt);
-        else if (which == "backdrop") render::draw_backdrop(s.c, s.m, s.wd.R, s.o);
+        else if (which == "backdrop") render::draw_backdrop(s.c, s.m, s.o);
         else if (which == "backdrop_pixelwise") {
             s.c.clear(s.o.background);
             render::shade_outside_circle(s.c, static_cast<double>(s.m.cx), static_cast<double>(s.m.cy),
@@ -87,7 +87,7 @@ void stage(benchmark::State& st, const std::string& which, int w, int h, render:
         } else if (which == "raster") {
             std::size_t at = 0;
             for (std::size_t k = 0; k < s.wd.bodies.size(); ++k) {
-                render::draw_screen_points(s.c, s.pts.data() + at, s.counts[k], render::body_color(s.wd.bodies[k]), {});
+                render::draw_screen_points(s.c, s.pts.data() + at, s.counts[k], render::body_color(s.wd.bodies[k], s.o), {});
                 at += s.counts[k];
             }
         } else if (which == "copy") render::copy_canvas(s.c, s.fb);

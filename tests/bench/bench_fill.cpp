@@ -54,7 +54,7 @@ struct Setup {
         : scene(make(variant)), wd(scene),
           back(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel())),
           c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f),
-          m(render::ScreenMap<T>::of(c, wd.R)) {
+          m(render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection)) {
         scratch.prepare(wd);
         for (int i = 0; i < 30; ++i) wd.step(T(1.0 / 60));
         render::draw_world(c, wd, o, scratch);

@@ -165,7 +165,7 @@ void screen(benchmark::State& st, const char* scene) {
     render::DrawScratch<T> s;
     s.prepare(w);
     const render::DrawOptions o;
-    const render::ScreenMap<T> m = render::ScreenMap<T>::of(800, 480, w.R);
+    const render::ScreenMap<T> m = render::ScreenMap<T>::of(800, 480, w.K, w.R, o.projection);
     double n = 0;
     for (auto _ : st) {
         std::size_t total = 0;

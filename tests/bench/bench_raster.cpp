@@ -1,6 +1,6 @@
 // The line rasteriser against Cairo (image surface, pixman), measured side by side in one run
 // (Google Benchmark), with a summary table of ms per 100k segments and Cairo/ours ratios.
-//     build/release/bench_raster
+//     build/release/bench_raster --benchmark_repetitions=5   (the table takes the fastest of each)
 //     build/release/bench_raster --benchmark_filter=aliased
 //
 // Workload: 100,000 segments, each 50 px long, from a random start inside a 1280x720 canvas in
@@ -33,10 +33,10 @@
 #include <cstring>
 #include <map>
 #include <random>
-#include <set>
 #include <string>
 #include <vector>
 
+#include "fastest.hpp"
 #include "render/canvas.hpp"
 #include "render/raster.hpp"
 
@@ -230,44 +230,19 @@ Counts count_cairo() {
     return c;
 }
 
-// Prints what the console reporter prints, and remembers ms per iteration for the summary
-// (with --benchmark_repetitions, the median).
-class RatioReporter : public benchmark::ConsoleReporter {
-public:
-    void ReportRuns(const std::vector<Run>& runs) override {
-        for (const Run& r : runs) {
-            if (r.error_occurred) continue;
-            if (r.run_type == Run::RT_Iteration && !median_.count(r.run_name.str()))
-                ms_[r.run_name.str()] = r.GetAdjustedCPUTime();  // in the benchmark's unit: ms
-            else if (r.run_type == Run::RT_Aggregate && r.aggregate_name == "median")
-                ms_[r.run_name.str()] = r.GetAdjustedCPUTime(), median_.insert(r.run_name.str());
-        }
-        ConsoleReporter::ReportRuns(runs);
-    }
-    void Finalize() override {
-        ConsoleReporter::Finalize();
-        std::printf("\nms per 100k segments of 50 px (CPU time), same run; ratio > 1 means ours is faster\n");
-        std::printf("%-14s %10s %12s %12s %12s %14s\n", "lines", "ours", "cairo", "cairo/ours", "cairo 1path",
-                    "cairo1p/ours");
-        row("aliased", "ours_aliased", "cairo_aliased", "cairo_aliased_path", 10);
-        row("anti-aliased", "ours_antialiased", "cairo_antialiased", "cairo_antialiased_path", 4);
-    }
-
-private:
-    std::map<std::string, double> ms_;
-    std::set<std::string> median_;
-
-    double get(const std::string& name) const {
-        const auto it = ms_.find(name);
-        return it == ms_.end() ? NAN : it->second;
-    }
-    void row(const char* label, const char* o, const char* c, const char* c1, double goal) const {
-        const double ours_ms = get(o), cairo_ms = get(c), cairo1_ms = get(c1);
-        if (std::isnan(ours_ms) && std::isnan(cairo_ms) && std::isnan(cairo1_ms)) return;
-        std::printf("%-14s %10.2f %12.2f %12.2f %12.2f %14.2f   (goal cairo/ours >= %g)\n", label, ours_ms,
-                    cairo_ms, cairo_ms / ours_ms, cairo1_ms, cairo1_ms / ours_ms, goal);
-    }
-};
+// The summary: ms per 100k segments, the fastest repetition of each (fastest.hpp), and the
+// ratios of Cairo's to ours.
+std::map<std::string, double> g_ms;
+double ms_of(const std::string& name) {
+    const auto it = g_ms.find(name);
+    return it == g_ms.end() ? NAN : it->second;
+}
+void ratio_row(const char* label, const char* o, const char* c, const char* c1, double goal) {
+    const double ours_ms = ms_of(o), cairo_ms = ms_of(c), cairo1_ms = ms_of(c1);
+    if (std::isnan(ours_ms) && std::isnan(cairo_ms) && std::isnan(cairo1_ms)) return;
+    std::printf("%-14s %10.2f %12.2f %12.2f %12.2f %14.2f   (goal cairo/ours >= %g)\n", label, ours_ms, cairo_ms,
+                cairo_ms / ours_ms, cairo1_ms, cairo1_ms / ours_ms, goal);
+}
 
 }  // namespace
 
@@ -293,8 +268,15 @@ int main(int argc, char** argv) {
         return 1;
     }
 
-    RatioReporter reporter;
+    FastestReporter reporter([](const std::string& name, const benchmark::BenchmarkReporter::Run& r) {
+        if (!r.error_occurred) keep_fastest(g_ms, name, r.GetAdjustedCPUTime());  // in the benchmarks' unit: ms
+    });
     benchmark::RunSpecifiedBenchmarks(&reporter);
     benchmark::Shutdown();
+    std::printf("\nms per 100k segments of 50 px (CPU time, the fastest of the repetitions), same run; ratio > 1 means "
+                "ours is faster\n");
+    std::printf("%-14s %10s %12s %12s %12s %14s\n", "lines", "ours", "cairo", "cairo/ours", "cairo 1path", "cairo1p/ours");
+    ratio_row("aliased", "ours_aliased", "cairo_aliased", "cairo_aliased_path", 10);
+    ratio_row("anti-aliased", "ours_antialiased", "cairo_antialiased", "cairo_antialiased_path", 10);
     return 0;
 }

@@ -42,7 +42,7 @@ void run(benchmark::State& st, Point p, bool raster) {
     std::vector<uint8_t> px(800 * 480 * 2);
     const render::Canvas c(px.data(), 800, 480, 1600, render::PixelFormat::rgb565());
     const render::DrawOptions o;
-    const auto m = render::ScreenMap<T>::of(c, wd.R);
+    const auto m = render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection);
     for (auto _ : st) {
         if (raster)
             render::draw_world(c, wd, o, scratch, false);

@@ -11,8 +11,9 @@
 // with A asteroids and B bullets in flight; stage collide: the game's collision tests alone,
 // the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
-// K = sweep changes it every frame as attract mode does, so every body's shape cache
-// (render::ShapeCache) is rebuilt every frame: the worst case of the frame stage.
+// K = sweep changes it every frame as attract mode does, from -0.6 (sweep@K0: from K0), so every
+// body's shape cache (render::ShapeCache) is rebuilt every frame: the worst case of the frame
+// stage.
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
 #include <algorithm>
@@ -101,8 +102,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
     }
-    if (K && std::string(K) == "sweep") {  // attract mode's sweep: K changes every frame (-1 to 1 in 40 s)
-        scene.curvature = -0.6;
+    if (K && std::string(K).rfind("sweep", 0) == 0) {  // attract mode's sweep: K changes every frame (-1 to 1 in 40 s)
+        scene.curvature = std::string(K).size() > 6 ? std::atof(K + 6) : -0.6;  // sweep@K0 starts at K0
         scene.sweep_rate = 0.05;
     } else if (K && *K) {
         scene.curvature = std::atof(K);
@@ -144,7 +145,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         render::copy_canvas(c, fb);
     };
     frame();  // warm-up, in every run
-    const auto m = render::ScreenMap<T>::of(c, wd.R);
+    const auto m = render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection);
     std::vector<render::SubPoint> pts;
     std::vector<std::size_t> counts;
     for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
@@ -178,7 +179,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     for (long i = 0; i < n; ++i) {
         if (stage == "frame") frame();
         else if (stage == "step") wd.step(dt);
-        else if (stage == "backdrop") render::draw_backdrop(c, m, wd.R, o);
+        else if (stage == "backdrop") render::draw_backdrop(c, m, o);
         else if (stage == "geometry") {
             for (std::size_t b = 0; b < wd.bodies.size(); ++b)
                 if (render::body_shown(wd.bodies[b], o))
@@ -187,7 +188,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         } else if (stage == "raster") {
             std::size_t at = 0;
             for (std::size_t k = 0; k < wd.bodies.size(); ++k) {
-                render::draw_screen_points(c, pts.data() + at, counts[k], render::body_color(wd.bodies[k]), {});
+                render::draw_screen_points(c, pts.data() + at, counts[k], render::body_color(wd.bodies[k], o), {});
                 at += counts[k];
             }
         } else if (stage == "copy") render::copy_canvas(c, fb);

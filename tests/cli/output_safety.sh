@@ -2,7 +2,8 @@
 # Output is written whole or not at all, and a failed write is one sentence and a non-zero exit:
 #  - standard output on a full disk (/dev/full): dump, accuracy, --help;
 #  - a file-size limit (RLIMIT_FSIZE, as a full disk) while writing a PNG (render, demo, run's
-#    screenshot) or a recording: the existing file is left as it was, no temporary file remains;
+#    screenshot), an animated GIF (render --gif, and into a missing directory) or a recording:
+#    the existing file is left as it was, no temporary file remains;
 #  - SIGTERM while the world runs, and SIGINT while the PNG is written: the same.
 #   output_safety.sh NONEUCLID
 set -uo pipefail
@@ -67,6 +68,14 @@ echo "an earlier recording" > rec.txt && cp rec.txt rec.txt.good
 expect "recording over the file-size limit" 1 "the recording: cannot write rec.txt: File too large" \
     prlimit --fsize=300 "$noneuclid" run --display png --frames 100 --record rec.txt --screenshot shot.png
 intact "recording over the file-size limit" rec.txt
+
+"$noneuclid" render --scene fig1 --frames 4 --size 160x120 --gif anim.gif 2>/dev/null && cp anim.gif anim.gif.good
+expect "render --gif over the file-size limit" 1 "cannot write anim.gif: File too large" \
+    prlimit --fsize=3000 "$noneuclid" render --scene fig1 --frames 120 --gif anim.gif
+intact "render --gif over the file-size limit" anim.gif
+expect "render --gif into a missing directory" 1 "cannot write missing/anim.gif: No such file or directory" \
+    "$noneuclid" render --scene fig1 --frames 4 --gif missing/anim.gif
+[ ! -e missing ] && pass "render --gif into a missing directory: nothing made" || fail "render --gif made missing/"
 
 mkdir -p demo && "$noneuclid" demo --out-dir demo > /dev/null 2>&1
 cp demo/kiosk.png kiosk.png.good

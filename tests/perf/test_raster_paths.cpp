@@ -1,7 +1,8 @@
 // The rasteriser's and the backdrop's fast paths write what the plain loops write, bit for
 // bit: draw_polyline (32-bit loops, byte offsets, skipped checks) against the generic 64-bit
 // loop behind visit_polyline; the backdrop as spans against Canvas::clear +
-// shade_outside_circle; fill_span against the pixels one by one.
+// shade_outside_circle, and its limit circle line against the band around the circle;
+// fill_span against the pixels one by one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,12 +29,59 @@ TEST(FastPaths, BackdropSpansAreClearPlusShade) {
                     const render::Canvas cy(y.data(), w, h, static_cast<std::ptrdiff_t>(stride), f);
                     render::DrawOptions o;
                     o.shade_outside = shade;
-                    const auto m = render::ScreenMap<double>::of(cx, R);
-                    render::draw_backdrop(cx, m, R, o);
+                    o.rim_line = false;
+                    const auto m = render::ScreenMap<double>::of(cx, 0.0, R, o.projection);
+                    render::draw_backdrop(cx, m, o);
                     cy.clear(o.background);
-                    if (shade) render::shade_outside_circle(cy, m.cx, m.cy, m.scale * R, o.outside);
+                    if (shade) render::shade_outside_circle(cy, m.cx, m.cy, m.rim, o.outside);
                     ASSERT_EQ(x, y) << w << "x" << h << " R " << R << " shade " << shade;
                 }
+}
+
+// The limit circle's line in the backdrop: aliased, exactly the pixels whose centre lies within
+// half the line's width of the circle (those within 1e-9 px of that band's edges, where the
+// test's hypot and the backdrop's square root may round apart, left out); anti-aliased, each
+// pixel's coverage, 1 - (distance - half width) clamped, blended over the backdrop, to within
+// one level. Every row band drawn on its own gives the same picture.
+TEST(FastPaths, TheLimitCircleLineIsTheBandAroundTheCircle) {
+    const render::PixelFormat f = render::PixelFormat::xrgb8888();
+    for (auto [w, h] : {std::pair{800, 480}, std::pair{101, 40}, std::pair{480, 480}})
+        for (int32_t width : {256, 640})
+            for (bool aa : {false, true}) {
+                std::vector<uint32_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+                const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * 4, f);
+                render::DrawOptions o;
+                o.antialias = aa, o.line_width = width;
+                const auto m = render::ScreenMap<double>::of(c, 0.0, 3.0, o.projection);
+                render::draw_backdrop(c, m, o);
+                const double half = width / 512.0;
+                long ring = 0;
+                for (int y = 0; y < h; ++y)
+                    for (int x = 0; x < w; ++x) {
+                        const double d = std::hypot(x + 0.5 - static_cast<double>(m.cx), y + 0.5 - static_cast<double>(m.cy));
+                        const render::Rgb base = d < m.rim ? o.background : o.outside;
+                        const render::Rgb got = c.get(x, y);
+                        if (!aa) {
+                            const double off = std::fabs(d - m.rim);
+                            if (std::fabs(off - half) < 1e-9 || std::fabs(d - m.rim) < 1e-9) continue;
+                            const render::Rgb want = off < half || (off == half && d > m.rim) ? o.rim : base;
+                            ASSERT_TRUE(got == want) << w << "x" << h << " pixel " << x << "," << y;
+                            ring += off < half;
+                        } else {
+                            const double cover = std::clamp(half + 0.5 - std::fabs(d - m.rim), 0.0, 1.0);
+                            auto mix = [cover](uint8_t a, uint8_t b) { return a + (b - a) * cover; };
+                            ASSERT_NEAR(got.r, mix(base.r, o.rim.r), 1.01) << x << "," << y;
+                            ASSERT_NEAR(got.g, mix(base.g, o.rim.g), 1.01) << x << "," << y;
+                            ASSERT_NEAR(got.b, mix(base.b, o.rim.b), 1.01) << x << "," << y;
+                            ring += cover > 0;
+                        }
+                    }
+                EXPECT_GT(ring, 2 * 3.14 * m.rim * half) << w << "x" << h;  // the line is there
+                std::vector<uint32_t> bands(px.size(), 0);
+                const render::Canvas cb(bands.data(), w, h, static_cast<std::ptrdiff_t>(w) * 4, f);
+                for (int y0 = 0; y0 < h; y0 += 7) render::draw_backdrop_rows(cb, render::limit_circle(m), o, y0, y0 + 7);
+                ASSERT_EQ(px, bands) << w << "x" << h;
+            }
 }
 
 // What draw_polyline writes, built from visit_polyline's pixels: the generic 64-bit loop (no
@@ -98,7 +146,7 @@ TEST(FastPaths, RasterIntoACanvasIsTheGenericLoop) {
                 const render::LineStyle style = styles[rng() % 5];
                 const bool closed = rng() % 4 == 0;
                 const render::Rgb color{static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng()), static_cast<uint8_t>(rng())};
-                const bool as_line = n == 2 && rng() % 2 == 0;  // with its end point: the open polyline
+                const bool as_line = n == 2 && rng() % 2 == 0;  // with its end points: the open polyline
                 // Two lines in three into a row band (a thread's share of draw_world): thin lines
                 // past its edges take the 32-bit loop, visit_polyline cuts them exactly in 64 bits.
                 render::RowRange rows;

@@ -43,7 +43,7 @@ std::vector<render::Rgb> textured(const world::Scene& sc) {
     const render::Canvas c{px.data(), kW, kH, kW * 4, render::PixelFormat::xrgb8888()};
     const render::DrawOptions o;
     s.fill.begin_frame(c);
-    if (const render::FillJob* j = s.fill.plan(w, 0, render::ScreenMap<T>::of(c, w.R), o, kW, kH))
+    if (const render::FillJob* j = s.fill.plan(w, 0, render::ScreenMap<T>::of(c, w.K, w.R, o.projection), o, kW, kH))
         render::fill_rows(c, *j, 0, kH, s.fill.work[0]);
     std::vector<render::Rgb> out;
     for (int y = 0; y < kH; ++y)

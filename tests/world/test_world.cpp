@@ -298,7 +298,9 @@ TEST(Scenes, Fig16IsThePapersSquareAtNinetyPaperPixels) {
     ASSERT_EQ(sq.vertices.size(), 4u);
     for (int i = 0; i < 4; ++i) {
         EXPECT_NEAR(sq.vertices[static_cast<std::size_t>(i)].rho, kPi / 6, 1e-12);  // 90 px at 540 px = pi
-        EXPECT_NEAR(sq.vertices[static_cast<std::size_t>(i)].phi_deg, 22.5 * (2 * i + 1), 1e-12);
+        // Equally spaced, as the paper's text says (its vertex list, pi/8 + k pi/4, spans only
+        // 135 degrees; docs/rendering.md): pi/8 + k pi/2.
+        EXPECT_NEAR(sq.vertices[static_cast<std::size_t>(i)].phi_deg, 22.5 + 90.0 * i, 1e-12);
     }
 }
 
