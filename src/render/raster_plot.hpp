@@ -161,11 +161,11 @@ struct Plotter {
         last_x = static_cast<int>(x), last_y = static_cast<int>(y);
         if (first_x == kNone) first_x = last_x, first_y = last_y;
     }
-    // The pixel holding a polyline's point where it turns by more than 90 degrees: the
-    // half-open segments on either side may both stop short of it (at a fold back, by up to a
-    // pixel). Written unless it is the last pixel written (or, `closing`: the first); the last
-    // pixel stays the previous segment's, and the next segment's first pixel is checked against
-    // both.
+    // The pixel holding a polyline's point where its segments do not step along the same axis
+    // the same way (sharp_join in raster.cpp): the half-open segments on either side may both
+    // stop short of it, by up to a pixel. Written unless it is the last pixel written (or,
+    // `closing`: the first); the last pixel stays the previous segment's, and the next
+    // segment's first pixel is checked against both.
     void join(int x, int y, bool closing) {
         if (!inside(x, y) || (x == last_x && y == last_y) || (closing && x == first_x && y == first_y)) return;
         sink.opaque(x, y);
