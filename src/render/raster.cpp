@@ -119,11 +119,12 @@ void segment(P& p, SubPoint a, SubPoint b, LineStyle style) {
 // it. Otherwise (a fold back, or a turn across a diagonal from x-major to y-major) both may stop
 // up to a pixel short of b along their own axes, leaving b up to 1.8 px from the nearest pixel:
 // there b's own pixel is plotted too (Plotter::join).
+// (Signs only, no products: the points may lie anywhere in the int32 range.)
 template <class P>
 void sharp_join(P& p, SubPoint a, SubPoint b, SubPoint c, bool closing = false) {
     const int64_t ux = int64_t{b.x} - a.x, uy = int64_t{b.y} - a.y, vx = int64_t{c.x} - b.x, vy = int64_t{c.y} - b.y;
     const bool ax = (ux < 0 ? -ux : ux) >= (uy < 0 ? -uy : uy), bx = (vx < 0 ? -vx : vx) >= (vy < 0 ? -vy : vy);
-    if (ax != bx || ux * vx + uy * vy < 0)
+    if (ax != bx || (ax ? (ux ^ vx) : (uy ^ vy)) < 0)  // other axes, or the same axis the other way
         p.join(static_cast<int>(floor_sub<int64_t>(b.x)), static_cast<int>(floor_sub<int64_t>(b.y)), closing);
 }
 
