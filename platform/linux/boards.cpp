@@ -24,11 +24,11 @@ std::vector<std::string> board_dirs() {
     return dirs;
 }
 
-bool load_board(const std::string& spec, world::Board& out, std::string& error) {
-    world::BoardError e;
+bool load_board(const std::string& spec, files::Board& out, std::string& error) {
+    files::BoardError e;
     const bool is_path = spec.find('/') != std::string::npos || (spec.size() > 5 && spec.ends_with(".toml"));
     if (is_path) {
-        if (world::load_board_file(spec, out, e)) return true;
+        if (files::load_board_file(spec, out, e)) return true;
         error = e.to_string();
         return false;
     }
@@ -37,14 +37,14 @@ bool load_board(const std::string& spec, world::Board& out, std::string& error) 
         const fs::path p = fs::path(d) / (spec + ".toml");
         std::error_code ec;
         if (fs::is_regular_file(p, ec)) {
-            if (world::load_board_file(p.string(), out, e)) return true;
+            if (files::load_board_file(p.string(), out, e)) return true;
             error = e.to_string();
             return false;
         }
         looked += (looked.empty() ? "" : ", ") + d;
     }
     if (spec == "generic") {  // no boards directory (a binary copied on its own): built in
-        if (world::parse_board(kGenericBoard, "generic (built in)", out, e)) return true;
+        if (files::parse_board(kGenericBoard, "generic (built in)", out, e)) return true;
         error = e.to_string();
         return false;
     }
@@ -53,7 +53,7 @@ bool load_board(const std::string& spec, world::Board& out, std::string& error) 
     return false;
 }
 
-bool detect_board(world::Board& out, std::string& why, std::string& error) {
+bool detect_board(files::Board& out, std::string& why, std::string& error) {
     std::string model;
     {
         std::ifstream in("/proc/device-tree/model", std::ios::binary);
@@ -65,9 +65,9 @@ bool detect_board(world::Board& out, std::string& why, std::string& error) {
             std::error_code ec;
             for (const fs::directory_entry& f : fs::directory_iterator(d, ec)) {
                 if (f.path().extension() != ".toml") continue;
-                world::Board b;
-                world::BoardError e;
-                if (!world::load_board_file(f.path().string(), b, e)) continue;
+                files::Board b;
+                files::BoardError e;
+                if (!files::load_board_file(f.path().string(), b, e)) continue;
                 for (const std::string& m : b.models)
                     if (!m.empty() && model.compare(0, m.size(), m) == 0) {
                         out = b;
@@ -97,7 +97,7 @@ std::string board_override_path() {
 #endif
 }
 
-bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error) {
+bool find_board(const std::string& spec, files::Board& out, std::string& note, std::string& error) {
     if (spec.empty()) {
         if (!detect_board(out, note, error)) return false;
     } else {
@@ -109,8 +109,8 @@ bool find_board(const std::string& spec, world::Board& out, std::string& note, s
     const std::string over = board_override_path();
     std::error_code ec;
     if (over.empty() || !fs::exists(over, ec)) return true;
-    world::BoardError e;
-    if (!world::overlay_board_file(over, out, e)) {
+    files::BoardError e;
+    if (!files::overlay_board_file(over, out, e)) {
         error = e.to_string();
         return false;
     }

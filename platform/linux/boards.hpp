@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "app/platform.hpp"
-#include "world/board.hpp"
+#include "files/board.hpp"
 
 namespace noneuclid::platform {
 
@@ -21,10 +21,10 @@ std::string board_override_path();
 
 // `spec` is a file path (contains '/' or ends in .toml) or a board name (rpi4, generic, ...).
 // On failure returns false with one sentence in `error`.
-bool load_board(const std::string& spec, world::Board& out, std::string& error);
+bool load_board(const std::string& spec, files::Board& out, std::string& error);
 
 // The board file whose models match /proc/device-tree/model; "generic" when none does (or the
 // machine has no device tree). `why` says which and because of what, for the start-up log.
-bool detect_board(world::Board& out, std::string& why, std::string& error);
+bool detect_board(files::Board& out, std::string& why, std::string& error);
 
 }  // namespace noneuclid::platform

@@ -103,7 +103,7 @@ else()
 endif()
 target_sources(noneuclid_input PRIVATE linux/gpio_common.cpp linux/evdev.cpp linux/input.cpp)
 target_include_directories(noneuclid_input PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
-target_link_libraries(noneuclid_input PUBLIC noneuclid_world PRIVATE noneuclid_posix noneuclid_warnings)
+target_link_libraries(noneuclid_input PUBLIC noneuclid_files PRIVATE noneuclid_posix noneuclid_warnings)
 # 64-bit directory offsets on 32-bit ARM: readdir() of a large-offset directory (ext4 hashes,
 # and every directory under qemu-arm on a 64-bit host) fails with EOVERFLOW without it.
 target_compile_definitions(noneuclid_input PUBLIC _FILE_OFFSET_BITS=64)

@@ -11,7 +11,7 @@
 
 namespace noneuclid::platform {
 
-bool open_board_inputs(const world::Board& b, const std::string& mode, std::vector<std::unique_ptr<InputSource>>& out,
+bool open_board_inputs(const files::Board& b, const std::string& mode, std::vector<std::unique_ptr<InputSource>>& out,
                        std::string& error) {
     if (mode == "none") return true;
     const bool want_gpio = mode == "gpio" || (mode == "auto" && b.has_gpio());
@@ -132,7 +132,7 @@ int print_input_events(InputSource& src, long max_events, double timeout_seconds
     }
 }
 
-int print_buttons(const world::Board& board, const std::string& input, long events, double timeout) {
+int print_buttons(const files::Board& board, const std::string& input, long events, double timeout) {
     std::vector<std::unique_ptr<InputSource>> inputs;
     std::string error;
     if (!open_board_inputs(board, input, inputs, error)) {

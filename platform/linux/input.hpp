@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "app/platform.hpp"  // monotonic_ns: the clock read() and deadline_ns() speak
-#include "world/board.hpp"
+#include "files/board.hpp"
 #include "world/controls.hpp"
 
 namespace noneuclid::platform {
@@ -82,7 +82,7 @@ const char* gpiod_version();
 // The board's buttons as input sources: `mode` gpio, evdev, none or auto (GPIO if the board wires
 // any, plus key devices if it names keys and one is present). Says what it opened, one line
 // each, on stderr. False with one sentence in `error`.
-bool open_board_inputs(const world::Board& board, const std::string& mode,
+bool open_board_inputs(const files::Board& board, const std::string& mode,
                        std::vector<std::unique_ptr<InputSource>>& out, std::string& error);
 
 }  // namespace noneuclid::platform

@@ -192,7 +192,7 @@ EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
     return g_run ? noneuclid::geo::projection_name(g_run->session->options().draw.projection) : "";
 }
 EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
-    return g_run ? noneuclid::app::engine_name(g_run->options.engine) : "";
+    return g_run ? noneuclid::world::engine_name(g_run->options.engine) : "";
 }
 EMSCRIPTEN_KEEPALIVE int nw_width() { return g_run ? g_run->display->canvas().width() : 0; }
 EMSCRIPTEN_KEEPALIVE int nw_height() { return g_run ? g_run->display->canvas().height() : 0; }

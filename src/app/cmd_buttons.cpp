@@ -24,7 +24,7 @@ int buttons_command(int argc, char** argv, int first) {
         else if (opt == "--timeout") timeout = args.number(opt, 0.001, 1e7);
         else usage_error("unknown option '" + opt + "' for buttons; see 'noneuclid --help'.");
     }
-    world::Board board;
+    files::Board board;
     std::string note, error;
     if (!platform::find_board(board_spec, board, note, error)) usage_error(error + ".");
     std::fprintf(stderr, "noneuclid: %s.\n", note.c_str());

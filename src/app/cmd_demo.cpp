@@ -14,7 +14,7 @@ namespace noneuclid::app {
 
 int demo_command(int argc, char** argv, int first) {
     std::string dir = "out";
-    Engine engine = Engine::fixed;
+    world::EngineKind engine = world::kDefaultEngine;
     int width = 0, height = 0;  // a panel's; 0: each figure's own
     bool hud = true;
     Args args(argc, argv, first);

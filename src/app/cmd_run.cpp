@@ -46,7 +46,7 @@ int run_command(int argc, char** argv, int first) {
         parse_options(args, given, Command::run);
     }
     const platform::DisplayKind kind = display_kind(given);
-    world::Board board;
+    files::Board board;
     const bool kiosk = kind == platform::DisplayKind::fbdev;
     if (kiosk) {
         std::string note, error;

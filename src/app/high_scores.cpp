@@ -9,7 +9,7 @@
 
 #include "app/platform.hpp"
 #include "world/quote.hpp"
-#include "world/text_file.hpp"
+#include "files/text_file.hpp"
 
 namespace noneuclid::app {
 
@@ -71,7 +71,7 @@ HighScoreTable::HighScoreTable(std::string path) : path_(std::move(path)) {
     std::error_code ec;
     if (!std::filesystem::exists(path_, ec)) return;
     std::string text, why;
-    if (world::read_text_file(path_, kScoresFileLimit, "a high-score table", text, why) && parse_scores(text, table_, why))
+    if (files::read_text_file(path_, kScoresFileLimit, "a high-score table", text, why) && parse_scores(text, table_, why))
         return;
     table_.clear();
     const std::string aside = path_ + ".damaged";

@@ -1,5 +1,7 @@
 #include "app/options.hpp"
 
+#include "world/quote.hpp"
+
 namespace noneuclid::app {
 
 namespace {
@@ -7,11 +9,6 @@ constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
 constexpr unsigned kDump = bit(Command::dump), kRender = bit(Command::render), kRun = bit(Command::run);
 constexpr unsigned kWorld = kDump | kRender | kRun, kPicture = kRender | kRun;
 
-std::string engine_list() {
-    std::string s;
-    for (Engine e : kEngines) s += std::string(s.empty() ? "" : e == Engine::paper ? " or " : ", ") + engine_name(e);
-    return s;
-}
 std::string legend_value(const std::string& opt, const std::string& text) {
     if (text != "keys" && text != "buttons") usage_error(opt + " must be keys or buttons, not '" + text + "'.");
     return text;
@@ -32,9 +29,9 @@ void display_value(const std::string& text, Options& o) {
 }
 }  // namespace
 
-Engine engine_value(const std::string& opt, const std::string& text) {
-    Engine e{};
-    if (!parse_engine(text, e)) usage_error(opt + " must be " + engine_list() + ", not '" + text + "'.");
+world::EngineKind engine_value(const std::string& opt, const std::string& text) {
+    world::EngineKind e;
+    if (!world::parse_engine(text, e)) usage_error(opt + " must be " + world::or_list(world::engine_names()) + ", not '" + text + "'.");
     return e;
 }
 
@@ -123,9 +120,9 @@ void apply_settings(const Script& script, Options& o, Command c) {
     }
 }
 
-void apply_board(const world::Board& b, Options& o) {
+void apply_board(const files::Board& b, Options& o) {
     o.scene = b.scene;
-    if (!parse_engine(b.engine, o.engine)) o.engine = Engine::fixed;  // the board file was checked when read
+    if (!world::parse_engine(b.engine, o.engine)) o.engine = world::kDefaultEngine;  // the board file was checked when read
     o.projection = parse_projection("the board's projection", b.projection);
     o.aa = b.antialias;
     o.hud = b.hud;
@@ -136,7 +133,7 @@ void apply_board(const world::Board& b, Options& o) {
     o.device = b.device;
 }
 
-Options layered_options(int argc, char** argv, int first, Command c, Script& script, const world::Board* board) {
+Options layered_options(int argc, char** argv, int first, Command c, Script& script, const files::Board* board) {
     Options given = defaults(c);
     {
         Args args(argc, argv, first);

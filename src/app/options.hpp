@@ -7,9 +7,9 @@
 #include <string>
 
 #include "app/args.hpp"
-#include "app/engine.hpp"
+#include "world/engines.hpp"
 #include "app/script.hpp"
-#include "world/board.hpp"
+#include "files/board.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::app {
@@ -21,7 +21,7 @@ struct Options {
     std::string scene = "kiosk";
     bool has_curvature = false;
     double curvature = 0;
-    Engine engine = Engine::fixed;
+    world::EngineKind engine = world::kDefaultEngine;
     std::string actions;
     world::SceneParams params;
     long frames = 60;           // run: 0, until closed
@@ -65,16 +65,16 @@ void parse_options(Args& args, Options& o, Command c);
 // A recording's settings over `o`: a bad one is a UsageError naming the file and line.
 void apply_settings(const Script& script, Options& o, Command c);
 // The kiosk board's [display] defaults over `o`.
-void apply_board(const world::Board& b, Options& o);
+void apply_board(const files::Board& b, Options& o);
 
 // The command line, with a recording's settings (and, for the kiosk, a board's) under it: the
 // defaults, `board` if given, the settings of the --actions file if any (loaded into `script`),
 // then the command line. A bad word or file is a UsageError.
 Options layered_options(int argc, char** argv, int first, Command c, Script& script,
-                        const world::Board* board = nullptr);
+                        const files::Board* board = nullptr);
 
 const char* command_name(Command c);
 // The engine named `text`, or a UsageError naming `opt`.
-Engine engine_value(const std::string& opt, const std::string& text);
+world::EngineKind engine_value(const std::string& opt, const std::string& text);
 
 }  // namespace noneuclid::app

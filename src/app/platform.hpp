@@ -12,7 +12,7 @@
 #include "app/display.hpp"
 #include "render/canvas.hpp"
 #include "render/font.hpp"
-#include "world/board.hpp"
+#include "files/board.hpp"
 #include "world/image.hpp"
 
 namespace noneuclid::platform {
@@ -50,14 +50,14 @@ DisplayChoice choose_display();
 struct WindowSpec {
     int width = 800, height = 480;  // the window's first size
 };
-// The X11 window (platform/desktop/x11_display.cpp). Null, with one sentence in `error`, when it
+// The X11 window (platform/x11/x11_display.cpp). Null, with one sentence in `error`, when it
 // cannot be opened or this build has none.
 std::unique_ptr<app::Display> open_window(const WindowSpec& spec, std::string& error);
 
 struct KioskSpec {
     std::string device = "/dev/fb0";  // the framebuffer
     double fps = 60;                  // the loop's cap: vsync paces only at >= 55
-    world::Board board;               // the buttons (GPIO lines, evdev keys)
+    files::Board board;               // the buttons (GPIO lines, evdev keys)
     std::string input = "auto";       // gpio, evdev, none or auto
 };
 // The kiosk (platform/linux/kiosk_display.cpp): the framebuffer, the console it owns, the
@@ -107,7 +107,7 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
 // truncated or damaged, too large.
 bool read_texture(const std::string& path, world::Image& out, std::string& why);
 
-// An animated GIF written frame by frame (platform/desktop/gif_file.cpp, giflib), whole or not
+// An animated GIF written frame by frame (platform/files/gif_file.cpp, giflib), whole or not
 // at all as write_png writes (AtomicFile): `path` is untouched until finish() succeeds, and a
 // failed write, a stop signal (stop_signal()) or a writer destroyed unfinished leave it as it
 // was. Every frame has the writer's size and its own colour table: its colours exactly when
@@ -153,11 +153,11 @@ bool hud_font(const std::string& choice, LoadedFont& out, std::string& error);
 // `spec` is a board file's path or a board name (rpi4, generic, ...); "" detects the board from
 // the machine's device-tree model (generic when none matches); then the board override
 // (/etc/noneuclid/board.toml, platform/linux/boards.hpp) over it. `note` says which and why.
-bool find_board(const std::string& spec, world::Board& out, std::string& note, std::string& error);
+bool find_board(const std::string& spec, files::Board& out, std::string& note, std::string& error);
 
 // `noneuclid buttons`: prints each press and release of the board's buttons (`input`: gpio,
 // evdev or auto) to stdout, "press thrust", until `events` events (0: no limit) or `timeout`
 // seconds (0: none). Returns the exit status; errors are one sentence on stderr.
-int print_buttons(const world::Board& board, const std::string& input, long events, double timeout);
+int print_buttons(const files::Board& board, const std::string& input, long events, double timeout);
 
 }  // namespace noneuclid::platform

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "world/quote.hpp"
-#include "world/text_file.hpp"
+#include "files/text_file.hpp"
 
 namespace noneuclid::app {
 
@@ -114,7 +114,7 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
 
 bool load_script(const std::string& path, Script& out, ScriptError& error) {
     std::string text, why;
-    if (!world::read_text_file(path, world::kActionsFileLimit, "an actions file", text, why)) {
+    if (!files::read_text_file(path, files::kActionsFileLimit, "an actions file", text, why)) {
         error = {path, 0, "the actions file: " + why + ": check the path"};
         return false;
     }

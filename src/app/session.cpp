@@ -104,9 +104,9 @@ public:
     }
 
     void dump(int width, int height, std::string& line) const override {
-        world::DumpOptions o;
+        files::DumpOptions o;
         o.width = width, o.height = height, o.projection = options_.draw.projection;
-        world::dump_frame(world_, o, line);
+        files::dump_frame(world_, o, line);
     }
 
     double time() const override { return world_.time; }
@@ -229,8 +229,8 @@ private:
     render::WorkerPool pool_;
     Autopilot autopilot_;
     T dt_;
-    render::DrawScratch<T> scratch_;
-    render::ParallelScratch<T> parallel_;
+    render::DrawScratch<T, typename W::engine> scratch_;
+    render::ParallelScratch<T, typename W::engine> parallel_;
     world::InputEvent queue_[kQueue];
     int queued_ = 0;
     bool user_held_[world::kControlCount] = {};
@@ -240,9 +240,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
+std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores) {
-    return with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
+    return world::with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
         return std::make_unique<EngineSession<W>>(scene, options, font, recorder, scores);
     });
 }

@@ -13,12 +13,12 @@
 #include <string>
 
 #include "app/autopilot.hpp"
-#include "app/engine.hpp"
+#include "world/engines.hpp"
 #include "app/script.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
 #include "render/font.hpp"
-#include "world/dump.hpp"
+#include "files/dump.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::app {
@@ -86,7 +86,7 @@ public:
 
 // A session of `scene` on `engine`, its drawing threads started. `font` (the HUD's),
 // `recorder` and `scores` (both may be null) must outlive it.
-std::unique_ptr<Session> make_session(Engine engine, const world::Scene& scene, const SessionOptions& options,
+std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores = nullptr);
 
 // The HUD legends: the desktop's keys, the kiosk's buttons.

@@ -7,7 +7,7 @@
 #include "app/commands.hpp"
 #include "world/budget.hpp"
 #include "world/ranges.hpp"
-#include "world/scene_file.hpp"
+#include "files/scene_file.hpp"
 
 namespace noneuclid::app {
 
@@ -16,8 +16,8 @@ world::Scene load_scene(const Options& o) {
     std::string over;
     if (!world::builtin_scene(o.scene, o.params, scene, &over)) {
         if (!over.empty()) usage_error(over + " (--bodies, --vertices, --tessellation).");
-        world::SceneError err;
-        if (!world::load_scene_file(o.scene, scene, err, platform::read_texture)) {
+        files::SceneError err;
+        if (!files::load_scene_file(o.scene, scene, err, platform::read_texture)) {
             std::error_code ec;
             if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos &&
                 !std::filesystem::exists(std::filesystem::symlink_status(o.scene, ec))) {
@@ -55,7 +55,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     const bool file = o.scene.find('/') != std::string::npos || o.scene.ends_with(".toml");
     rec.setting("scene", file ? std::filesystem::absolute(o.scene, ec).string() : o.scene);
     if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
-    rec.setting("engine", engine_name(o.engine));
+    rec.setting("engine", world::engine_name(o.engine));
     rec.setting("projection", geo::projection_name(o.projection));
     rec.setting("aa", o.aa ? "on" : "off");
     rec.setting("hud", o.hud ? "on" : "off");

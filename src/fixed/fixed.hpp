@@ -28,7 +28,7 @@ constexpr int32_t saturate32(int64_t v) noexcept {
     return v > INT32_MAX ? INT32_MAX : (v < INT32_MIN ? INT32_MIN : static_cast<int32_t>(v));
 }
 // n / d rounded to nearest (ties away from zero) for d > 0 and |n| < 2^62, exact, without a
-// 64-bit divide instruction (detail::div_round<false> in math.hpp, out of line in tables.cpp).
+// 64-bit divide instruction (fixed/division.hpp; out of line in tables.cpp).
 // 32-bit ARM has no such instruction: there operator/ uses this instead of gcc's
 // __aeabi_ldivmod (~400 instructions); the results are the same bit for bit.
 int64_t div_round_portable(int64_t n, uint32_t d) noexcept;

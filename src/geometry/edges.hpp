@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "geometry/fx/slerp.hpp"
 #include "geometry/model.hpp"
 #include "geometry/projection.hpp"
 #include "geometry/walk.hpp"

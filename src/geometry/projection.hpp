@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "fixed/projection.hpp"
+#include "geometry/fx/equidistant.hpp"
 #include "geometry/model.hpp"
 
 namespace noneuclid::geo {

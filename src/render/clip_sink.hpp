@@ -1,8 +1,8 @@
-// Where a body's curve goes on its way to the rasteriser: each point of it as a Spot (its
-// sub-pixel place, whether the projection shows it, whether it lies within the clip circle),
-// the chords between them clipped to the clip circle (ClipSink: one polyline, kBreak where it
-// leaves the circle or the projection cannot show it), and the test that decides whether a
-// chord is close enough to its curve (flat).
+// Where a body's curve goes on its way to the rasteriser: the engine's outline
+// (geometry/engine.hpp) gives each point of it as a Spot (its sub-pixel place, whether the
+// projection shows it, whether it lies within the clip circle) and the chords between them;
+// ClipSink clips them to the clip circle into one polyline, kBreak where it leaves the circle or
+// the projection cannot show it.
 #pragma once
 
 #include <cmath>
@@ -14,45 +14,7 @@
 
 namespace noneuclid::render {
 
-// The largest distance, in sub-pixels, a drawn chord may keep from its curve: 0.35 px.
-inline constexpr int64_t kChordTolerance = 90;
-
-// A point of a curve on the screen. `in`: shown and within the clip circle.
-struct Spot {
-    SubPoint at{};
-    bool shown = false;
-    bool in = false;
-};
-template <class T>
-Spot spot_at(const ScreenMap<T>& m, SubPoint at) {
-    return {at, true, m.inside(at)};
-}
-
-// How far the curve through a, m and b (m the curve's point halfway along it) departs from
-// the chord a -> b, in grades: kFlat, within kChordTolerance (the chord may be drawn); kOneCut,
-// within 3 times it (each half of the curve is then within 3/4 of it: a smooth curve's
-// departure shrinks fourfold when it is halved); kBent, more, or m not between a and b. The
-// distance of m from the chord's line is measured against the chord's length approximated as
-// max(|dx|, |dy|) + min(|dx|, |dy|) / 4, within 3% above it and less than 15% below, with the
-// tolerance 3% less: the test never passes a point farther than the tolerance. In 64-bit
-// integers, the same on every machine; coordinates 2^30 sub-pixels apart are kBent.
-enum Grade { kFlat, kOneCut, kBent };
-[[gnu::always_inline]] inline Grade grade(SubPoint a, SubPoint m, SubPoint b) {
-    const int64_t dx = int64_t{b.x} - a.x, dy = int64_t{b.y} - a.y;
-    const int64_t ex = int64_t{m.x} - a.x, ey = int64_t{m.y} - a.y;
-    constexpr uint64_t kFar = uint64_t{1} << 30;
-    if ((static_cast<uint64_t>(dx + kFar) | static_cast<uint64_t>(dy + kFar) | static_cast<uint64_t>(ex + kFar) |
-         static_cast<uint64_t>(ey + kFar)) >= 2 * kFar)
-        return kBent;
-    const int64_t adx = dx < 0 ? -dx : dx, ady = dy < 0 ? -dy : dy;
-    const int64_t length = adx > ady ? adx + ady / 4 : ady + adx / 4;
-    const int64_t cross = dx * ey - dy * ex, off = cross < 0 ? -cross : cross;
-    const int64_t slack = (kChordTolerance * 32 / 33) * length;  // (3% less)
-    const int64_t along = dx * ex + dy * ey;
-    if (along < -slack || along > dx * dx + dy * dy + slack) return kBent;
-    if (length == 0) return (ex < 0 ? -ex : ex) + (ey < 0 ? -ey : ey) <= kChordTolerance ? kFlat : kBent;
-    return off <= slack ? kFlat : off <= 3 * slack ? kOneCut : kBent;
-}
+using geo::Spot;
 
 // Writes a body's polyline: its first point (start), then each chord to the next point
 // (chord), clipped to the clip circle: a chord that leaves the circle ends at it, and the

@@ -26,25 +26,25 @@
 #include "render/fill.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
-#include "render/shape_cache.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::render {
 
 // Buffers for drawing one body at a time (its points, vertices and 3-vectors), and every
-// body's shape cache. Sized by prepare, for this world: prepare again for another world.
-template <class T>
+// body's cache of its engine E (geometry/engine.hpp). Sized by prepare, for this world: prepare
+// again for another world.
+template <class T, class E = geo::Exact<T>>
 struct DrawScratch {
     std::vector<SubPoint> points;
     std::vector<geo::Polar<T>> vertices;  // body_screen_points' verts and vecs
     std::vector<geo::Vec3<T>> vectors;
-    std::vector<ShapeCache<T>> shapes;    // world.bodies[i]'s is shapes[i]
+    std::vector<typename E::Cache> shapes;  // world.bodies[i]'s is shapes[i]
     FillScratch<T> fill;                  // filled and textured bodies (render/fill.hpp)
     template <class W>
     void prepare(const W& world) {
         std::size_t most = 1, most_v = 1;
         for (const auto& b : world.bodies) {
-            most = std::max(most, body_point_capacity(b));
+            most = std::max(most, body_point_capacity(world, b));
             most_v = std::max(most_v, b.local.size());
         }
         points.resize(most);
@@ -58,7 +58,7 @@ struct DrawScratch {
 // World.bodies[i]: its fill, then its outline.
 template <class W>
 void draw_body(const Canvas& c, const W& world, std::size_t i, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-               DrawScratch<typename W::scalar>& s) {
+               DrawScratch<typename W::scalar, typename W::engine>& s) {
     const auto& b = world.bodies[i];
     if (const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height())) fill_rows(c, *j, 0, c.height(), s.fill.work[0]);
     const std::size_t count =
@@ -69,7 +69,7 @@ void draw_body(const Canvas& c, const W& world, std::size_t i, const ScreenMap<t
 // The whole frame: the backdrop (left out when `backdrop` is false: the bodies are drawn over
 // what the canvas holds), then every body the options show.
 template <class W>
-void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar>& s,
+void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar, typename W::engine>& s,
                 bool backdrop = true) {
     using T = typename W::scalar;
     const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);

@@ -6,7 +6,7 @@
 // which matches the Latin console fonts (Lat15-*, Uni2-*, default8x16) for ASCII; characters
 // beyond ASCII show whatever glyph sits at that index, or '?' past the end.
 //
-// No heap, no OS: parse_psf only reads bytes the caller has loaded (see platform/desktop/
+// No heap, no OS: parse_psf only reads bytes the caller has loaded (see platform/files/
 // console_font.hpp), and a Font points into those bytes.
 #pragma once
 

@@ -32,7 +32,6 @@
 #include "render/fill.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
-#include "render/shape_cache.hpp"
 #include "render/worker_pool.hpp"
 #include "world/world.hpp"
 
@@ -108,23 +107,23 @@ protected:
 };
 
 // Buffers for draw_world over a WorkerPool: every body's points at once, each thread's band
-// lists, vertices and 3-vectors, every body's shape cache. Sized by prepare, for this world and
-// this pool: prepare again for another.
-template <class T>
+// lists, vertices and 3-vectors, every body's cache of its engine E. Sized by prepare, for this
+// world and this pool: prepare again for another.
+template <class T, class E = geo::Exact<T>>
 struct ParallelScratch : ParallelScratchBase {
     // Each thread's vertices and 3-vectors: thread t's start at t * stride, slices whole cache
     // lines apart (no line written by two threads).
     std::vector<geo::Polar<T>> vertices;
     std::vector<geo::Vec3<T>> vectors;
     std::size_t stride_v = 1, stride_vec = 1;
-    std::vector<ShapeCache<T>> shapes;  // world.bodies[i]'s is shapes[i], refreshed by the thread that does it
+    std::vector<typename E::Cache> shapes;  // world.bodies[i]'s is shapes[i], refreshed by the thread that does it
     FillScratch<T> fill;                // each body's fill planned by the thread that does it; a RowWork per thread
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
         std::size_t most_v = 1, arena = 0;
         for (const auto& b : world.bodies) {
-            arena += arena_step(body_point_capacity(b));  // one thread may do every body
+            arena += arena_step(body_point_capacity(world, b));  // one thread may do every body
             most_v = std::max(most_v, b.local.size());
         }
         prepare_bands(world.bodies.size(), arena, pool.size());
@@ -215,7 +214,7 @@ void finish_frame(ParallelScratchBase& s, int threads);
 // list closed.
 template <class W>
 void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-                        ParallelScratch<typename W::scalar>& s, const FrameBands& f, int t) {
+                        ParallelScratch<typename W::scalar, typename W::engine>& s, const FrameBands& f, int t) {
     using T = typename W::scalar;
     const int threads = f.threads;
     const uint32_t gen = f.generation;
@@ -278,7 +277,7 @@ void geometry_of_thread(const W& world, const ScreenMap<typename W::scalar>& m, 
 // a canvas with fewer rows than threads.
 template <class W>
 void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-                   ParallelScratch<typename W::scalar>& s, bool backdrop) {
+                   ParallelScratch<typename W::scalar, typename W::engine>& s, bool backdrop) {
     if (backdrop) draw_backdrop(c, m, o);
     s.fill.begin_frame(c);
     const std::size_t nb = std::min(s.bodies, world.bodies.size());
@@ -297,7 +296,7 @@ void draw_unbanded(const Canvas& c, const W& world, const ScreenMap<typename W::
 // The frame of draw_world(c, world, o, DrawScratch&), pixel for pixel, over the pool's threads
 // (the header comment). The scratch must have been prepared for this world and this pool.
 template <class W>
-void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar>& s,
+void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelScratch<typename W::scalar, typename W::engine>& s,
                 WorkerPool& pool, bool backdrop = true) {
     using T = typename W::scalar;
     using clock = std::chrono::steady_clock;

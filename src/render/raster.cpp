@@ -135,16 +135,6 @@ void end_point(P& p, SubPoint e, LineStyle style) {
     p.opaque(floor_sub<int64_t>(e.x), floor_sub<int64_t>(e.y));
 }
 
-SubPoint to_sub_impl(double x, double y) {
-    constexpr double lim = 4194304.0 * kSub;  // 2^22 px
-    auto conv = [](double v) {
-        if (!(v == v)) return static_cast<int32_t>(lim);  // NaN: far outside
-        const double s = v * kSub;
-        return static_cast<int32_t>(s > lim ? lim : (s < -lim ? -lim : std::nearbyint(s)));
-    };
-    return {conv(x), conv(y)};
-}
-
 // polyline() in a row band less than the canvas (out of line: the unbanded loop, the
 // one-thread frame's, does not carry it).
 template <class Sink>
@@ -224,8 +214,6 @@ void polyline(const Sink& sink, const SubPoint* points, int n, bool closed, Line
 }
 
 }  // namespace
-
-SubPoint to_sub(double x, double y) { return to_sub_impl(x, y); }
 
 template <int Bpp>
 void line_in(const Canvas& c, SubPoint a, SubPoint b, Rgb color, LineStyle style, bool plot_ends, RowRange rows) {

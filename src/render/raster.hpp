@@ -36,21 +36,16 @@
 #include <cmath>
 #include <cstdint>
 
+#include "geometry/screen_map.hpp"
 #include "render/canvas.hpp"
 
 namespace noneuclid::render {
 
-struct SubPoint {
-    int32_t x = 0, y = 0;  // 1/256 px
-};
-inline constexpr int kSubBits = 8;
-inline constexpr int32_t kSub = 1 << kSubBits;
-
-// From double pixels, saturating at +-2^22 px (far beyond any canvas; clipping keeps the
-// direction exact enough there) and mapping NaN to a point far outside.
-SubPoint to_sub(double x, double y);
-// From Q16.16 pixels (the fixed-point engine's screen points).
-constexpr SubPoint to_sub_q16(int32_t x_raw, int32_t y_raw) { return {x_raw >> 8, y_raw >> 8}; }
+using geo::kSub;
+using geo::kSubBits;
+using geo::SubPoint;
+using geo::to_sub;
+using geo::to_sub_q16;
 
 using PixelVisitor = void (*)(int x, int y, int alpha, void* context);
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
-#include "world/coast.hpp"
+#include "geometry/coast.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::world {
@@ -16,13 +16,17 @@ struct alignas(64) Body {
     geo::Polar<T> centre;
     T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
     std::vector<geo::Polar<T>> local;  // (rho, phi from the facing), radians
-    Coast<T> coast;                    // the straight stretch it is on (world/coast.hpp)
+    geo::Coast<T> coast;               // the straight stretch it is on (geometry/coast.hpp)
     const SceneBody* desc = nullptr;   // name, colour, closed, tessellation, kind
     uint32_t shape = 0;    // counts the changes of `local` (a game's new asteroid): caches follow it
     uint32_t serial = 0;   // a game's asteroid or bullet: its number ("asteroid 12"); 0 otherwise
     bool active = true;    // in the world: moved, drawn, dumped, hit (a game's spare slots are not)
     bool hidden = false;   // in the world but not drawn this frame (the respawned ship blinking)
     bool wrapped = false;  // the last step took it across the limit circle
+
+    // What the engines (geometry/engine.hpp) read of its description.
+    bool closed() const { return desc->closed; }
+    int tessellation() const { return desc->tessellation; }
 };
 
 }  // namespace noneuclid::world

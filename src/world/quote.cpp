@@ -92,4 +92,13 @@ std::string quote(std::string_view s, std::size_t limit) {
     return q;
 }
 
+std::string or_list(const std::vector<std::string>& names, bool quoted) {
+    std::string s;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        s += i == 0 ? "" : i + 1 == names.size() ? " or " : ", ";
+        s += quoted ? "\"" + names[i] + "\"" : names[i];
+    }
+    return s;
+}
+
 }  // namespace noneuclid::world

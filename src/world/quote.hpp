@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace noneuclid::world {
 
@@ -42,5 +43,10 @@ bool is_plain(std::string_view s);
 // surrogates, nothing above U+10FFFF. On success sets `cp` and `length` (1-4) and returns true;
 // on an invalid or cut sequence returns false (s[i] is then a byte to show as \xNN).
 bool utf8_decode(std::string_view s, std::size_t i, char32_t& cp, std::size_t& length);
+
+// Names as a sentence's list of choices: "a, b or c" (`quoted`: "\"a\", \"b\" or \"c\"", as a
+// TOML file writes them). The registries' names (engines, projections, scenes, ...) reach help
+// and error sentences through this.
+std::string or_list(const std::vector<std::string>& names, bool quoted = false);
 
 }  // namespace noneuclid::world

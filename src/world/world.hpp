@@ -1,6 +1,7 @@
 // The world: K, the limit radius R and the bodies, stepped at a fixed timestep by the paper's
 // physics, driven by the same actions the kiosk buttons send. Templated on the scalar like the
-// geometry; `Paper = true` (double only) moves bodies with the paper's literal formulas.
+// geometry, and on the engine (geometry/engine.hpp) that moves and draws its bodies: the exact
+// forms (geo::Exact<T>, the default) or the paper's literal formulas (geo::Paper, double only).
 //
 // One step of dt, for every body (the paper, section "movement"):
 //  1. acceleration: a body's own (scene files may give one), or for the ship while thrust is
@@ -8,9 +9,9 @@
 //     centre (both are angles in the carried frame there). A coasting body (a = 0) keeps its
 //     speed exactly.
 //  2. the centre moves speed * dt along the geodesic in its direction of travel; the direction
-//     of travel, the facing and the acceleration's direction are carried along. A body walks
-//     its coast from where it began (world/coast.hpp), so the steps' roundings do not add up;
-//     Paper walks each step from the last (its engine::move).
+//     of travel, the facing and the acceleration's direction are carried along (the engine's
+//     move: geo::Exact walks the body's coast from where it began, geometry/coast.hpp, so the
+//     steps' roundings do not add up; geo::Paper walks each step from the last).
 //  3. spin (plus the ship's turn while left/right is held) turns the facing.
 //  4. the limit circle: a centre past R reappears at (2R - r, theta + pi), its direction of
 //     travel and facing unchanged on screen (the same carried-frame angles). At K > 0 with
@@ -29,10 +30,9 @@
 #include <type_traits>
 #include <vector>
 
+#include "geometry/engine.hpp"
 #include "geometry/geometry.hpp"
-#include "geometry/paper.hpp"
 #include "world/body.hpp"
-#include "world/coast.hpp"
 #include "world/game.hpp"
 #include "world/ranges.hpp"
 #include "world/scene.hpp"
@@ -67,39 +67,13 @@ inline bool parse_action(const std::string& s, Action& out) {
     return false;
 }
 
-// The engine's geometry: the exact forms, or the paper's (double only).
-template <class T, bool Paper>
-struct Engine {
-    static Pose<T> move(T K, Pose<T> p, T d) { return geo::move(K, p, d); }
-    static Polar<T> vertex(T K, Polar<T> c, T facing, Polar<T> local) {
-        return geo::vertex_position(K, c, facing, local);
-    }
-    template <class Out>
-    static void edge_points(T K, Polar<T> p, Polar<T> q, int n, Out&& out) {
-        geo::edge_points(K, p, q, n, out);
-    }
-};
-template <>
-struct Engine<double, true> {
-    static Pose<double> move(double K, Pose<double> p, double d) { return geo::paper::move(K, p, d); }
-    static Polar<double> vertex(double K, Polar<double> c, double facing, Polar<double> local) {
-        return geo::paper::vertex_position(K, c, facing, local);
-    }
-    template <class Out>
-    static void edge_points(double K, Polar<double> p, Polar<double> q, int n, Out&& out) {
-        out(0, p);
-        for (int k = 1; k < n; ++k) out(k, geo::paper::edge_point(K, p, q, static_cast<double>(k) / n));
-        out(n, q);
-    }
-};
-
-template <class T, bool Paper = false>
+template <class T, geo::Engine E = geo::Exact<T>>
 class World {
-    static_assert(!Paper || std::is_same_v<T, double>, "the paper's formulas are double only");
+    static_assert(std::is_same_v<typename E::scalar, T>, "the engine's scalar is the world's");
 
 public:
     using scalar = T;
-    using engine = Engine<T, Paper>;
+    using engine = E;
 
     explicit World(const Scene& scene) : scene_(scene) {
         K = T(scene_.curvature);
@@ -209,31 +183,10 @@ private:
             if (b.speed > T(Ranges::kSpeed)) b.speed = T(Ranges::kSpeed);  // the ceiling (ranges.hpp)
             if (b.desc->controlled && b.speed > steer.top) b.speed = steer.top;
         }
-        bool walked = false;
-        if (b.speed != T(0)) {
-            if constexpr (Paper) {
-                const T d = b.speed * dt;  // Paper is double only: no rounding to carry
-                const Pose<T> p = engine::move(K, Pose<T>{b.centre, b.travel, b.facing}, d);
-                b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
-                b.centre = p.centre;
-                b.travel = p.travel;
-                b.facing = p.facing;
-            } else {
-                coast_step(K, b, dt);  // world/coast.hpp
-                walked = true;
-            }
-        }
+        const bool walked = b.speed != T(0) && engine::move(K, b, dt);
         const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
         if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
-        b.wrapped = b.centre.r > R;
-        if (b.wrapped) {  // the limit circle
-            const T r = T(2) * R - b.centre.r;
-            if (walked)
-                b.centre = coast_wrap(b.coast, R);  // the same, in the coast's numbers
-            else
-                b.centre = {r > T(0) ? r : T(0), wrap_pi(b.centre.theta + geo::pi_v<T>)};
-        }
-        b.coast.left = b.centre, b.coast.left_travel = b.travel;
+        engine::settle(b, R, walked);  // the limit circle (step 4)
     }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {

@@ -1,4 +1,4 @@
-// Animated GIFs (platform/desktop/gif_file.cpp, giflib): frames written and read back exactly
+// Animated GIFs (platform/files/gif_file.cpp, giflib): frames written and read back exactly
 // (at most 256 colours a frame), with their delays; a bad path is one sentence and leaves
 // nothing; a writer dropped unfinished or stopped leaves the target as it was.
 #include <gtest/gtest.h>

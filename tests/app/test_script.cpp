@@ -165,7 +165,7 @@ TEST(Options, SettingsAreDefaultsUnderTheCommandLine) {
     Script script;
     const app::Options o = app::layered_options(6, argv, 1, app::Command::render, script);
     EXPECT_EQ(o.scene, "fig14");
-    EXPECT_EQ(o.engine, app::Engine::float_);  // the command line wins
+    EXPECT_EQ(o.engine, world::engine_named("float"));  // the command line wins
     EXPECT_EQ(o.projection, geo::Projection::lambert_equal_area);
     EXPECT_FALSE(o.hud);  // --no-hud wins over "hud on"
     EXPECT_TRUE(o.aa);
@@ -177,7 +177,7 @@ TEST(Options, SettingsAreDefaultsUnderTheCommandLine) {
     // dump has no HUD: the setting does not matter to it, and is no error.
     Script s2;
     const app::Options d = app::layered_options(3, argv, 1, app::Command::dump, s2);
-    EXPECT_EQ(d.engine, app::Engine::double_);
+    EXPECT_EQ(d.engine, world::engine_named("double"));
 }
 
 TEST(Options, ABadSettingNamesTheFileAndLine) {

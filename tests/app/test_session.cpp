@@ -234,7 +234,7 @@ const std::vector<Key> kKeys = {
     {262, Control::hud, false},       {300, Control::hyperbolic, true},    {300, Control::hyperbolic, false},
 };
 
-void replays_exactly(app::Engine engine, double idle, int threads = 1) {
+void replays_exactly(world::EngineKind engine, double idle, int threads = 1) {
     for (render::PixelFormat format : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888()}) {
         SCOPED_TRACE(format.name);
         // With attract mode: idle from 5 s on, the autopilot flies from 8 s to the end (its
@@ -265,16 +265,16 @@ void replays_exactly(app::Engine engine, double idle, int threads = 1) {
     }
 }
 
-TEST(Recording, ReplaysPixelExactFixed) { replays_exactly(app::Engine::fixed, 0); }
-TEST(Recording, ReplaysPixelExactDouble) { replays_exactly(app::Engine::double_, 0); }
-TEST(Recording, ReplaysPixelExactFloat) { replays_exactly(app::Engine::float_, 0); }
+TEST(Recording, ReplaysPixelExactFixed) { replays_exactly(world::engine_named("fixed"), 0); }
+TEST(Recording, ReplaysPixelExactDouble) { replays_exactly(world::engine_named("double"), 0); }
+TEST(Recording, ReplaysPixelExactFloat) { replays_exactly(world::engine_named("float"), 0); }
 // With attract mode kicking in (after 3 s idle) the autopilot's presses and the HUD's attract
 // legend are replayed too.
-TEST(Recording, WithAttractModeReplaysPixelExact) { replays_exactly(app::Engine::fixed, 3); }
+TEST(Recording, WithAttractModeReplaysPixelExact) { replays_exactly(world::engine_named("fixed"), 3); }
 // --threads: drawn over a pool of 2 or 3, the same pixels as render's one thread.
 TEST(Recording, DrawnOnThreadsReplaysPixelExact) {
-    replays_exactly(app::Engine::fixed, 3, 2);
-    replays_exactly(app::Engine::double_, 0, 3);
+    replays_exactly(world::engine_named("fixed"), 3, 2);
+    replays_exactly(world::engine_named("double"), 0, 3);
 }
 
 // A whole game, recorded and replayed: a visitor starts it with fire, turns, thrusts and fires

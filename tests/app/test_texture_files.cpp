@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "app/platform.hpp"
-#include "world/scene_file.hpp"
+#include "files/scene_file.hpp"
 
 using namespace noneuclid;
 namespace fs = std::filesystem;
@@ -79,8 +79,8 @@ std::string scene_with(const TempDir& d, const std::string& texture, const std::
 // column 11).
 std::string refused(const std::string& scene) {
     world::Scene s;
-    world::SceneError e;
-    EXPECT_FALSE(world::load_scene_file(scene, s, e, platform::read_texture));
+    files::SceneError e;
+    EXPECT_FALSE(files::load_scene_file(scene, s, e, platform::read_texture));
     EXPECT_EQ(e.line, 5);
     EXPECT_EQ(e.column, 11);
     const std::string text = e.to_string();
@@ -89,8 +89,8 @@ std::string refused(const std::string& scene) {
     return text;
 }
 const world::Image& loaded(const std::string& scene, world::Scene& s) {
-    world::SceneError e;
-    EXPECT_TRUE(world::load_scene_file(scene, s, e, platform::read_texture)) << e.to_string();
+    files::SceneError e;
+    EXPECT_TRUE(files::load_scene_file(scene, s, e, platform::read_texture)) << e.to_string();
     EXPECT_FALSE(s.bodies.empty());
     static const world::Image none;
     return s.bodies.empty() || !s.bodies[0].texture ? none : *s.bodies[0].texture;
@@ -219,22 +219,22 @@ TEST(TextureFiles, PathsAreRelativeToTheSceneAndReadOnce) {
 // The built-in images need no file (nor a reader); anything else does.
 TEST(TextureFiles, BuiltInImagesNeedNoFile) {
     world::Scene s;
-    world::SceneError e;
+    files::SceneError e;
     const std::string body = "[[body]]\nvertices = [[0.3, 0], [0.3, 120], [0.3, 240]]\n";
-    ASSERT_TRUE(world::parse_scene(body + "texture = \"builtin:rock\"\n", "s.toml", s, e)) << e.to_string();
+    ASSERT_TRUE(files::parse_scene(body + "texture = \"builtin:rock\"\n", "s.toml", s, e)) << e.to_string();
     EXPECT_EQ(s.bodies[0].texture->width, 64);
-    EXPECT_FALSE(world::parse_scene(body + "texture = \"builtin:marble\"\n", "s.toml", s, e));
+    EXPECT_FALSE(files::parse_scene(body + "texture = \"builtin:marble\"\n", "s.toml", s, e));
     EXPECT_NE(e.message.find("no such built-in image (builtin:checker, builtin:rock)"), std::string::npos) << e.message;
-    EXPECT_FALSE(world::parse_scene(body + "texture = \"a.png\"\n", "s.toml", s, e));
+    EXPECT_FALSE(files::parse_scene(body + "texture = \"a.png\"\n", "s.toml", s, e));
     EXPECT_NE(e.message.find("image files cannot be read here"), std::string::npos) << e.message;
-    EXPECT_FALSE(world::parse_scene(body + "fill = \"#123\"\n", "s.toml", s, e));
+    EXPECT_FALSE(files::parse_scene(body + "fill = \"#123\"\n", "s.toml", s, e));
     EXPECT_EQ(e.line, 3);
-    EXPECT_FALSE(world::parse_scene(body + "closed = false\nfill = \"#123456\"\n", "s.toml", s, e));
+    EXPECT_FALSE(files::parse_scene(body + "closed = false\nfill = \"#123456\"\n", "s.toml", s, e));
     EXPECT_NE(e.message.find("a fill or a texture needs a closed outline of 3 or more vertices"), std::string::npos);
-    EXPECT_FALSE(world::parse_scene(body + "texture = \"builtin:rock\"\ntexture_filter = \"cubic\"\n", "s.toml", s, e));
+    EXPECT_FALSE(files::parse_scene(body + "texture = \"builtin:rock\"\ntexture_filter = \"cubic\"\n", "s.toml", s, e));
     EXPECT_NE(e.message.find("'texture_filter' = \"nearest\" or \"bilinear\""), std::string::npos) << e.message;
-    EXPECT_FALSE(world::parse_scene(body + "texture = \"builtin:rock\"\ntexture_scale = 0\n", "s.toml", s, e));
-    ASSERT_TRUE(world::parse_scene(body + "fill = \"#102030\"\n", "s.toml", s, e)) << e.to_string();
+    EXPECT_FALSE(files::parse_scene(body + "texture = \"builtin:rock\"\ntexture_scale = 0\n", "s.toml", s, e));
+    ASSERT_TRUE(files::parse_scene(body + "fill = \"#102030\"\n", "s.toml", s, e)) << e.to_string();
     EXPECT_TRUE(s.bodies[0].filled);
     EXPECT_EQ(s.bodies[0].fill, (world::Rgb{16, 32, 48}));
 }

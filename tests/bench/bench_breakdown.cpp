@@ -58,7 +58,7 @@ struct Setup {
         render::draw_world(c, wd, o, scratch);
         for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
             const auto& b = wd.bodies[i];
-            std::vector<render::SubPoint> p(render::body_point_capacity(b));
+            std::vector<render::SubPoint> p(render::body_point_capacity(wd, b));
             const std::size_t k =
                 render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
             pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));

@@ -68,26 +68,26 @@ void vertices(benchmark::State& st, const char* scene) {
 
 // The bodies' shape caches, made and refreshed for the world's K.
 template <class T>
-std::vector<render::ShapeCache<T>> shapes_of(const world::World<T>& w) {
-    std::vector<render::ShapeCache<T>> caches;
+std::vector<geo::ShapeCache<T>> shapes_of(const world::World<T>& w) {
+    std::vector<geo::ShapeCache<T>> caches;
     render::make_shape_caches(w, caches);
     for (std::size_t i = 0; i < caches.size(); ++i) caches[i].refresh(w.K, w.bodies[i]);
     return caches;
 }
 
 // The draw's vertices: the body's motion, applied to its cached local 3-vectors
-// (render::ShapeCache) as body_screen_points applies it (geo::MotionApply).
+// (geo::ShapeCache) as body_screen_points applies it (geo::MotionApply).
 template <class T>
 void vectors(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
-    std::vector<render::ShapeCache<T>> shapes = shapes_of(w);
+    std::vector<geo::ShapeCache<T>> shapes = shapes_of(w);
     std::vector<geo::Vec3<T>> buf(4096);
     double n = 0;
     for (const auto& b : w.bodies) n += static_cast<double>(b.local.size());
     for (auto _ : st) {
         for (std::size_t i = 0; i < w.bodies.size(); ++i) {
             const auto& b = w.bodies[i];
-            const render::ShapeCache<T>& sh = shapes[i].refresh(w.K, b);
+            const geo::ShapeCache<T>& sh = shapes[i].refresh(w.K, b);
             const geo::Motion<T> m = geo::body_motion(w.K, b.centre, b.facing);
             const geo::MotionApply<T> apply(m);
             apply(sh.local.data(), buf.data(), b.local.size());
@@ -114,7 +114,7 @@ void motion(benchmark::State& st, const char* scene) {
 template <class T>
 void apply(benchmark::State& st, const char* scene) {
     const world::World<T> w = make_world<T>(scene);
-    const std::vector<render::ShapeCache<T>> shapes = shapes_of(w);
+    const std::vector<geo::ShapeCache<T>> shapes = shapes_of(w);
     std::vector<geo::Motion<T>> ms;
     for (const auto& b : w.bodies) ms.push_back(geo::body_motion(w.K, b.centre, b.facing));
     std::vector<geo::Vec3<T>> buf(4096);

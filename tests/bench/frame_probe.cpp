@@ -12,7 +12,7 @@
 // the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
 // K = sweep changes it every frame as attract mode does, from -0.6 (sweep@K0: from K0), so every
-// body's shape cache (render::ShapeCache) is rebuilt every frame: the worst case of the frame
+// body's shape cache (geo::ShapeCache) is rebuilt every frame: the worst case of the frame
 // stage.
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
@@ -154,7 +154,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
             counts.push_back(0);
             continue;
         }
-        std::vector<render::SubPoint> p(render::body_point_capacity(b));
+        std::vector<render::SubPoint> p(render::body_point_capacity(wd, b));
         const std::size_t k =
             render::body_screen_points(wd, b, scratch.shapes[i], m, o, scratch.vertices.data(), scratch.vectors.data(), p.data());
         pts.insert(pts.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k));

@@ -9,13 +9,13 @@
 
 #include "app/script.hpp"
 #include "fixed/fixed.hpp"
-#include "world/board.hpp"
+#include "files/board.hpp"
 #include "world/controls.hpp"
-#include "world/dump.hpp"
+#include "files/dump.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
-#include "world/scene_file.hpp"
-#include "world/toml_reader.hpp"
+#include "files/scene_file.hpp"
+#include "files/toml_reader.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::fuzz {
@@ -47,12 +47,12 @@ void check_sentence(const std::string& s, const std::string& file, long line, lo
 bool in(double v, double lo, double hi) { return std::isfinite(v) && v >= lo && v <= hi; }
 
 // The vertices the scene's [[grid]] tables would add (world::add_axis_grid, add_radial_grid),
-// estimated from the TOML before world::parse_scene builds them. Values it cannot read are
+// estimated from the TOML before files::parse_scene builds them. Values it cannot read are
 // left to the parser, which refuses them before building that grid.
 double grid_vertices(std::string_view text) {
     long line = 0, column = 0;
     std::string why;
-    if (!world::tomlr::toml_guard(text, line, column, why)) return 0;  // refused before toml++
+    if (!files::tomlr::toml_guard(text, line, column, why)) return 0;  // refused before toml++
     toml::table root;
     try {
         root = toml::parse(text, std::string("estimate"));
@@ -122,10 +122,10 @@ std::string run_world(W& w, const app::Script& script, int frames, geo::Projecti
         }
         w.step(dt);
     }
-    world::DumpOptions o;
+    files::DumpOptions o;
     o.projection = projection;
     std::string line;
-    world::dump_frame(w, o, line);
+    files::dump_frame(w, o, line);
     FUZZ_CHECK(!line.empty() && line.back() == '\n' && line.find('\n') == line.size() - 1, line);
     return line;
 }
@@ -136,8 +136,8 @@ void scene(std::string_view input) {
     if (grid_vertices(input) > kMaxVertices) return;
     const std::string text(input);
     world::Scene s;
-    world::SceneError e;
-    if (!world::parse_scene(text, "f.toml", s, e)) {
+    files::SceneError e;
+    if (!files::parse_scene(text, "f.toml", s, e)) {
         check_sentence(e.to_string(), "f.toml", e.line, e.column, true);
         return;
     }
@@ -157,9 +157,9 @@ void scene(std::string_view input) {
 
 void board(std::string_view input) {
     const std::string text(input);
-    world::Board b;
-    world::BoardError e;
-    if (!world::parse_board(text, "b.toml", b, e)) {
+    files::Board b;
+    files::BoardError e;
+    if (!files::parse_board(text, "b.toml", b, e)) {
         check_sentence(e.to_string(), "b.toml", e.line, e.column, true);
         return;
     }
@@ -167,7 +167,7 @@ void board(std::string_view input) {
     FUZZ_CHECK(in(b.fps, 1, 1000) && b.threads >= 1 && b.threads <= 16, b.file);
     for (const std::string& s : {b.name, b.device, b.scene, b.evdev_device}) FUZZ_CHECK(world::is_plain(s), s);
     for (const std::string& s : b.chips) FUZZ_CHECK(world::is_plain(s), s);
-    for (const world::BoardButton& bb : b.buttons) {
+    for (const files::BoardButton& bb : b.buttons) {
         FUZZ_CHECK(bb.gpio >= 0 || bb.key >= 0, "a button with neither");
         FUZZ_CHECK(bb.gpio <= 1023 && bb.key <= 767 && bb.pin >= 0 && bb.pin <= 40, "a button out of range");
     }
@@ -196,8 +196,8 @@ void world(std::string_view input) {
     const std::string_view actions_text = split == std::string_view::npos ? std::string_view() : input.substr(split + 4);
     if (grid_vertices(scene_text) > kMaxVertices) return;
     world::Scene s;
-    world::SceneError se;
-    if (!world::parse_scene(std::string(scene_text), "w.toml", s, se)) return;  // the scene harness checks these
+    files::SceneError se;
+    if (!files::parse_scene(std::string(scene_text), "w.toml", s, se)) return;  // the scene harness checks these
     app::Script script;
     app::ScriptError ae;
     if (!app::parse_script(std::string(actions_text), "w.txt", script, ae)) return;
@@ -210,7 +210,7 @@ void world(std::string_view input) {
     world::World<fx::fixed> wf(s);
     world::World<double> wd(s);
     world::World<float> wfl(s);
-    world::World<double, true> wp(s);
+    world::World<double, geo::Paper> wp(s);
     run_world(wf, script, kFrames, projection);
     run_world(wd, script, kFrames, projection);
     run_world(wfl, script, kFrames, projection);

@@ -12,12 +12,12 @@
 
 namespace noneuclid::fuzz {
 
-void scene(std::string_view input);    // world::parse_scene
-void board(std::string_view input);    // world::parse_board
+void scene(std::string_view input);    // files::parse_scene
+void board(std::string_view input);    // files::parse_board
 void actions(std::string_view input);  // app::parse_script
 // A scene file, then a line "%%", then an actions file: both parsed, the scene built as
-// World<fixed>, World<double>, World<float> and World<double, true>, the actions applied while
-// each steps some frames, and the last frame dumped (world::dump_frame).
+// World<fixed>, World<double>, World<float> and World<double, geo::Paper>, the actions applied while
+// each steps some frames, and the last frame dumped (files::dump_frame).
 void world(std::string_view input);
 
 struct Harness {

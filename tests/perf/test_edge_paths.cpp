@@ -1,6 +1,6 @@
 // The geometry's fast paths against the arithmetic they replaced: geo::edge_points in fixed
 // point bit for bit against the loop it replaced (t = T(k)/T(n), a = u Sf / sfd); walk_end the
-// end of walk; the shape cache (render::ShapeCache) bit for bit the direct computation; the
+// end of walk; the shape cache (geo::ShapeCache) bit for bit the direct computation; the
 // adaptive tessellation's halving weight against std::. (How close the drawn curves come to
 // the truth: tests/render/test_curves.cpp.)
 #include <gtest/gtest.h>
@@ -88,25 +88,25 @@ TEST(FastPaths, WalkEndIsTheEndOfTheWalk) {
         }
 }
 
-// render::ShapeCache, refreshed when K changes, holds what the direct computation gives, bit
+// geo::ShapeCache, refreshed when K changes, holds what the direct computation gives, bit
 // for bit: to_vec of each local vertex, and for each edge geo::distance of its local end points
 // (for ends on one line through the centre, as a grid line's, the difference or sum of their
 // distances from it: exact), u = K (d/2)^2 and the halving weight h = SlerpMath::half(u), and
 // whether it is walked.
 template <class T>
 void shape_is_direct(const char* scene_name, double K0) {
-    using Math = render::SlerpMath<T>;
+    using Math = geo::SlerpMath<T>;
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene(scene_name, {40, 6, 5}, scene));
     scene.curvature = K0;
     scene.curvature_rate = 0.3;
     world::World<T> w(scene);
-    std::vector<render::ShapeCache<T>> caches;
+    std::vector<geo::ShapeCache<T>> caches;
     render::make_shape_caches(w, caches);
     for (int frame = 0; frame < 4; ++frame) {
         for (std::size_t bi = 0; bi < w.bodies.size(); ++bi) {
             const auto& b = w.bodies[bi];
-            const render::ShapeCache<T>& c = caches[bi].refresh(w.K, b);
+            const geo::ShapeCache<T>& c = caches[bi].refresh(w.K, b);
             ASSERT_TRUE(c.valid);
             ASSERT_EQ(c.K, w.K);
             const std::size_t n = b.local.size(), edges = c.walked.size();
@@ -159,11 +159,11 @@ TEST(FastPaths, HalvingWeightIsTheSecant) {
         const long double s = std::sqrt(std::fabs(static_cast<long double>(u)));
         const long double want = 0.5L / (u >= 0 ? std::cos(s) : std::cosh(s));
         const int64_t uq = std::llround(u * 1073741824.0);
-        const double fx_h = static_cast<double>(render::SlerpMath<fixed>::half(uq)) / 1073741824.0;
+        const double fx_h = static_cast<double>(geo::SlerpMath<fixed>::half(uq)) / 1073741824.0;
         const long double exact_q = 0.5L / (uq >= 0 ? std::cos(std::sqrt(uq / 1073741824.0L)) : std::cosh(std::sqrt(-uq / 1073741824.0L)));
         worst_fixed = std::max(worst_fixed, static_cast<double>(std::fabs(fx_h - exact_q) / exact_q));
-        worst_float = std::max(worst_float, static_cast<double>(std::fabs(render::SlerpMath<float>::half(static_cast<float>(u)) - want) / want));
-        worst_double = std::max(worst_double, static_cast<double>(std::fabs(render::SlerpMath<double>::half(u) - want) / want));
+        worst_float = std::max(worst_float, static_cast<double>(std::fabs(geo::SlerpMath<float>::half(static_cast<float>(u)) - want) / want));
+        worst_double = std::max(worst_double, static_cast<double>(std::fabs(geo::SlerpMath<double>::half(u) - want) / want));
     }
     ::noneuclid_test_record("halving weight, worst relative error: fixed %.3g, float %.3g, double %.3g\n", worst_fixed,
                             worst_float, worst_double);

@@ -81,7 +81,7 @@ TEST(FastPaths, MotionApplyIsTheMotionBitForBit) {
     EXPECT_GT(plane_rows, 1000);   // and the batch's loop that copies w
 }
 
-// render::detail::FixedEquidistant, one point: the 3-vector (C_K(r), S_K(r) cos t, S_K(r) sin t)
+// geo::FixedEquidistant, one point: the 3-vector (C_K(r), S_K(r) cos t, S_K(r) sin t)
 // rounded to Q16.16 lands within 0.012 px of centre + scale r (cos t, -sin t) computed in double
 // (measured: 0.0106 px; the floor to 1/256 px alone is up to 0.0055 px), for curvatures from
 // the sphere (past its equator too) to the hyperbolic plane and two screens; points outside
@@ -93,8 +93,8 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
         for (const auto& size : {std::pair{800, 480}, std::pair{1920, 1080}}) {
             const double R = K > 0 ? 3.14159265358979 / std::sqrt(K) : 3.2;
             const auto m = render::ScreenMap<fixed>::of(size.first, size.second, fixed(K), fixed(R), geo::Projection::azimuthal_equidistant);
-            render::detail::FixedEquidistant fe;
-            ASSERT_TRUE(render::detail::FixedEquidistant::make(m, fe));
+            geo::FixedEquidistant fe;
+            ASSERT_TRUE(geo::FixedEquidistant::make(m, fe));
             const double cx = static_cast<double>(m.cx), cy = static_cast<double>(m.cy), scale = static_cast<double>(m.scale);
             double worst = 0, flat_worst = 0;
             long shown = 0, left = 0, south_points = 0, flat = 0;
@@ -169,12 +169,12 @@ struct HalvingErr {
 template <class T, class Eval>
 void halving_errors(const world::World<T>& w, const Eval& ev0, geo::Projection proj,
                     render::DrawScratch<T>& s, int width, int height, HalvingErr& out) {
-    using Math = render::SlerpMath<T>;
+    using Math = geo::SlerpMath<T>;
     const double K = static_cast<double>(w.K);
     const noneuclid::testing::ReferenceView view(K, static_cast<double>(w.R), proj, width, height);
     for (std::size_t bi = 0; bi < w.bodies.size(); ++bi) {
         const auto& b = w.bodies[bi];
-        const render::ShapeCache<T>& sh = s.shapes[bi].refresh(w.K, b);
+        const geo::ShapeCache<T>& sh = s.shapes[bi].refresh(w.K, b);
         const geo::Motion<T> motion = geo::body_motion(w.K, b.centre, b.facing);
         const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
         std::vector<geo::Vec3<T>> v(n);
@@ -249,12 +249,12 @@ TEST(FastPaths, HalvingPointsAreOnTheGeodesic) {
                 const auto mf = render::ScreenMap<fixed>::of(W, H, wf.K, wf.R, proj);
                 const auto ml = render::ScreenMap<float>::of(W, H, wl.K, wl.R, proj);
                 const auto md = render::ScreenMap<double>::of(W, H, wd.K, wd.R, proj);
-                render::detail::FixedEquidistant fe;
-                if (proj == geo::Projection::azimuthal_equidistant && render::detail::FixedEquidistant::make(mf, fe))
-                    halving_errors(wf, render::detail::FixedEquidistantEval<false>{fe, wf.K, mf}, proj, sf, W, H, kernel);
-                halving_errors(wf, render::VecEval<fixed>{wf.K, proj, mf}, proj, sf, W, H, general);
-                halving_errors(wl, render::VecEval<float>{wl.K, proj, ml}, proj, sl, W, H, single);
-                halving_errors(wd, render::VecEval<double>{wd.K, proj, md}, proj, sd, W, H, twice);
+                geo::FixedEquidistant fe;
+                if (proj == geo::Projection::azimuthal_equidistant && geo::FixedEquidistant::make(mf, fe))
+                    halving_errors(wf, geo::FixedEquidistantEval<false>{fe, wf.K, mf}, proj, sf, W, H, kernel);
+                halving_errors(wf, geo::VecEval<fixed>{wf.K, proj, mf}, proj, sf, W, H, general);
+                halving_errors(wl, geo::VecEval<float>{wl.K, proj, ml}, proj, sl, W, H, single);
+                halving_errors(wd, geo::VecEval<double>{wd.K, proj, md}, proj, sd, W, H, twice);
             }
         }
     ::noneuclid_test_record("halving points from the reference geodesic, worst px at 800x480 (more than 10 px inside the clip "

@@ -128,7 +128,7 @@ private:
     app::MemoryDisplay inner_{320, 240, render::PixelFormat::rgb565()};
 };
 
-long loop_allocations(app::Engine engine, int threads, const char* scene_name = "kiosk") {
+long loop_allocations(world::EngineKind engine, int threads, const char* scene_name = "kiosk") {
     world::Scene scene;
     EXPECT_TRUE(world::builtin_scene(scene_name, {}, scene));
     app::SessionOptions so;
@@ -150,15 +150,15 @@ long loop_allocations(app::Engine engine, int threads, const char* scene_name = 
 }
 
 TEST(NoAllocation, TheFrameLoopAllocatesNothingPerFrame) {
-    EXPECT_EQ(loop_allocations(app::Engine::fixed, 1), 0);
-    EXPECT_EQ(loop_allocations(app::Engine::double_, 2), 0);
+    EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1), 0);
+    EXPECT_EQ(loop_allocations(world::engine_named("double"), 2), 0);
 }
 
 // The game: shots, hits, splits (new outlines in the asteroids' slots), crashes and attract
 // mode's play, without an allocation.
 TEST(NoAllocation, TheGameAllocatesNothingPerFrame) {
-    EXPECT_EQ(loop_allocations(app::Engine::fixed, 1, "asteroids"), 0);
-    EXPECT_EQ(loop_allocations(app::Engine::double_, 2, "asteroids"), 0);
+    EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1, "asteroids"), 0);
+    EXPECT_EQ(loop_allocations(world::engine_named("double"), 2, "asteroids"), 0);
 }
 
 }  // namespace

@@ -26,19 +26,19 @@ struct Variant {
     int height = 207;         // the canvas's rows (odd: the bands are uneven)
 };
 
-template <class T, bool Paper = false>
+template <class T, class E = geo::Exact<T>>
 void threaded_equals_serial(const char* scene_name, double K, geo::Projection proj, bool aa, int threads,
                             render::PixelFormat f, Variant v = {}) {
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene(scene_name, {60, 7, 6}, scene));
     scene.curvature = K;
-    world::World<T, Paper> w(scene);
+    world::World<T, E> w(scene);
     if (v.controls)
         for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) w.press(a);
-    render::DrawScratch<T> serial;
+    render::DrawScratch<T, E> serial;
     serial.prepare(w);
     render::WorkerPool pool(threads);
-    render::ParallelScratch<T> par;
+    render::ParallelScratch<T, E> par;
     par.prepare(w, pool);
     if (!v.edges.empty()) par.edge = v.edges, par.balance = false;
     par.generation = v.generation;
@@ -82,7 +82,7 @@ TEST(Parallel, SamePixelsAsOneThreadEveryEngine) {
             threaded_equals_serial<double>("fig17", 0, geo::Projection::azimuthal_equidistant, aa, threads, f);
             threaded_equals_serial<float>("kiosk", 0.3, geo::Projection::lambert_equal_area, aa, threads, f);
             threaded_equals_serial<float>("stress", -0.2, geo::Projection::gnomonic, aa, threads, f);
-            threaded_equals_serial<double, true>("kiosk", 0.5, geo::Projection::azimuthal_equidistant, aa, threads, f);
+            threaded_equals_serial<double, geo::Paper>("kiosk", 0.5, geo::Projection::azimuthal_equidistant, aa, threads, f);
             // Filled and textured bodies: their fills planned by each body's thread, drawn band by band.
             threaded_equals_serial<fx::fixed>("textured", -1, geo::Projection::azimuthal_equidistant, aa, threads, f);
             threaded_equals_serial<fx::fixed>("textured", 1, geo::Projection::azimuthal_equidistant, aa, threads, f);
@@ -235,7 +235,7 @@ TEST(Parallel, ControlsHeldEveryEngine) {
             threaded_equals_serial<fx::fixed>("kiosk", 0.5, geo::Projection::gnomonic, aa, threads, f, v);
             threaded_equals_serial<double>("stress", 0.3, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
             threaded_equals_serial<float>("kiosk", -0.3, geo::Projection::orthographic, aa, threads, f, v);
-            threaded_equals_serial<double, true>("kiosk", 0.6, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
+            threaded_equals_serial<double, geo::Paper>("kiosk", 0.6, geo::Projection::azimuthal_equidistant, aa, threads, f, v);
         }
 }
 

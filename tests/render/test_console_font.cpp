@@ -1,4 +1,4 @@
-// Console font files and the HUD font (platform/desktop/console_font.hpp): gzip and plain PSF
+// Console font files and the HUD font (platform/files/console_font.hpp): gzip and plain PSF
 // files written by the test and loaded back pixel for pixel, every bad file named in one
 // sentence, and the HUD's choice of font ($NONEUCLID_FONT, the console fonts, the built-in one).
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "desktop/console_font.hpp"
+#include "files/console_font.hpp"
 #include "psf_bytes.hpp"
 #include "render/font.hpp"
 

@@ -30,7 +30,7 @@ using app::Figure;
 
 // A figure as the demo draws it (app::render_figure: its panels side by side, each 480x480 and
 // labelled), without the HUD, as 8-bit RGB; its width in `width`.
-std::string render_rgb(const Figure& g, app::Engine engine, int& width) {
+std::string render_rgb(const Figure& g, world::EngineKind engine, int& width) {
     app::Options o = app::defaults(app::Command::render);
     o.engine = engine, o.hud = false;
     o.width = o.height = 480;
@@ -95,7 +95,7 @@ TEST(Golden, TheDoubleEngineRedrawsItsGoldens) {
     ASSERT_EQ(app::kFigureCount, 6);
     for (const Figure& g : std::span(app::kFigures, app::kFigureCount)) {
         int width = 0;
-        const std::string got = render_rgb(g, app::Engine::double_, width);
+        const std::string got = render_rgb(g, world::engine_named("double"), width);
         const Diff d = compare(got, load(g, width), width, 0);
         EXPECT_LE(d.differing, width * 480 / 2000) << g.name;  // 0.05%
         RecordProperty(std::string(g.name) + "_double_differing", static_cast<int>(d.differing));
@@ -105,7 +105,7 @@ TEST(Golden, TheDoubleEngineRedrawsItsGoldens) {
 TEST(Golden, TheFixedEngineDrawsTheSamePictures) {
     for (const Figure& g : std::span(app::kFigures, app::kFigureCount)) {
         int width = 0;
-        const std::string got = render_rgb(g, app::Engine::fixed, width);
+        const std::string got = render_rgb(g, world::engine_named("fixed"), width);
         const Diff d = compare(got, load(g, width), width, 24);
         RecordProperty(std::string(g.name) + "_fixed_differing", static_cast<int>(d.differing));
         RecordProperty(std::string(g.name) + "_fixed_unmatched", static_cast<int>(d.unmatched));

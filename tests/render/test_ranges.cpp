@@ -18,9 +18,9 @@
 
 #include "curve_reference.hpp"
 #include "render/draw_world.hpp"
-#include "world/dump.hpp"
+#include "files/dump.hpp"
 #include "world/ranges.hpp"
-#include "world/scene_file.hpp"
+#include "files/scene_file.hpp"
 
 namespace noneuclid {
 namespace {
@@ -135,7 +135,7 @@ TEST(Ranges, EveryEngineStaysFiniteOverTheWholeAcceptedRange) {
         run_and_check(world::World<fixed>(s), 240, "fixed", i);
         run_and_check(world::World<double>(s), 240, "double", i);
         run_and_check(world::World<float>(s), 240, "float", i);
-        run_and_check(world::World<double, true>(s), 240, "paper", i, false);
+        run_and_check(world::World<double, geo::Paper>(s), 240, "paper", i, false);
     }
 }
 
@@ -187,14 +187,14 @@ TEST(Ranges, ValuesJustPastTheRangesAreRefusedWithTheReason) {
     };
     for (const Case& c : cases) {
         world::Scene s;
-        world::SceneError err;
-        EXPECT_FALSE(world::parse_scene(c.text, "s.toml", s, err)) << c.text;
+        files::SceneError err;
+        EXPECT_FALSE(files::parse_scene(c.text, "s.toml", s, err)) << c.text;
         EXPECT_NE(err.to_string().find(c.says), std::string::npos) << err.to_string();
     }
     // And just inside: read.
     world::Scene s;
-    world::SceneError err;
-    EXPECT_TRUE(world::parse_scene(
+    files::SceneError err;
+    EXPECT_TRUE(files::parse_scene(
         "limit_radius = 3\n[[body]]\nposition = [3, 0]\nvelocity = [20, 0]\nvertices = [[1.4, 0]]\n", "s.toml", s, err))
         << err.to_string();
 }
@@ -221,7 +221,7 @@ TEST(Ranges, DumpAnglesNeverPrintAsMinus180) {
         for (int k = -3000; k <= 3000; ++k) {
             const double rad = base + k * 1e-10;
             std::string out;
-            world::detail::polar(out, 1, rad);
+            files::detail::polar(out, 1, rad);
             const double deg = std::stod(out.substr(out.find(',') + 1));
             EXPECT_GT(deg, -180) << out << " from " << rad;
             EXPECT_LE(deg, 180) << out << " from " << rad;

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "fixed/math.hpp"
+#include "geometry/fx/equidistant.hpp"
 #include "fixed/tables.hpp"
 
 namespace t = noneuclid::fx::tables;

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include "world/board.hpp"
+#include "files/board.hpp"
 
 namespace {
 
 using namespace noneuclid;
-using world::Board;
-using world::BoardError;
+using files::Board;
+using files::BoardError;
 using world::Control;
 
 // ---- board files ---------------------------------------------------------------------------
@@ -29,7 +29,7 @@ const std::map<int, int> kHeader = {
 Board load(const std::string& name) {
     Board b;
     BoardError e;
-    EXPECT_TRUE(world::load_board_file(std::string(NONEUCLID_SOURCE_DIR) + "/boards/" + name + ".toml", b, e)) << e.to_string();
+    EXPECT_TRUE(files::load_board_file(std::string(NONEUCLID_SOURCE_DIR) + "/boards/" + name + ".toml", b, e)) << e.to_string();
     return b;
 }
 
@@ -113,14 +113,14 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
     for (const BadBoard& c : cases) {
         Board b;
         BoardError e;
-        ASSERT_FALSE(world::parse_board(c.text, "t.toml", b, e)) << c.text;
+        ASSERT_FALSE(files::parse_board(c.text, "t.toml", b, e)) << c.text;
         const std::string s = e.to_string();
         EXPECT_NE(s.find(c.where), std::string::npos) << s;
         EXPECT_NE(s.find(c.message), std::string::npos) << s;
     }
     Board b;
     BoardError e;
-    EXPECT_FALSE(world::load_board_file("/nonexistent/board.toml", b, e));
+    EXPECT_FALSE(files::load_board_file("/nonexistent/board.toml", b, e));
     EXPECT_NE(e.to_string().find("the board file: cannot read it"), std::string::npos) << e.to_string();
 }
 
@@ -154,7 +154,7 @@ TEST(BoardOverride, TheShippedFileChangesNothingOnAnyBoard) {
         const Board before = load(name);
         Board b = before;
         BoardError e;
-        ASSERT_TRUE(world::overlay_board_file(shipped, b, e)) << e.to_string();
+        ASSERT_TRUE(files::overlay_board_file(shipped, b, e)) << e.to_string();
         EXPECT_EQ(fields(b), fields(before));
     }
 }
@@ -165,7 +165,7 @@ TEST(BoardOverride, KeysItSetsReplaceTheBoardsAndTheRestStays) {
     Board b = load("rpi4");
     const Board before = b;
     BoardError e;
-    ASSERT_TRUE(world::overlay_board_file(path, b, e)) << e.to_string();
+    ASSERT_TRUE(files::overlay_board_file(path, b, e)) << e.to_string();
     EXPECT_EQ(b.threads, 3);
     EXPECT_FALSE(b.antialias);
     EXPECT_EQ(b.idle_seconds, 300);
@@ -183,7 +183,7 @@ TEST(BoardOverride, ItsButtonsReplaceAllOfTheBoards) {
                                         "[[button]]\naction = \"reset\"\ngpio = 17\n");
     Board b = load("rpi4");
     BoardError e;
-    ASSERT_TRUE(world::overlay_board_file(path, b, e)) << e.to_string();
+    ASSERT_TRUE(files::overlay_board_file(path, b, e)) << e.to_string();
     ASSERT_EQ(b.buttons.size(), 2u);
     EXPECT_EQ(b.buttons[0].control, Control::thrust);
     EXPECT_EQ(b.buttons[0].gpio, 6);
@@ -200,11 +200,11 @@ TEST(BoardOverride, ABadFileIsNamedAndLeavesTheBoardAlone) {
     Board b = load("rpi3");
     const Board before = b;
     BoardError e;
-    ASSERT_FALSE(world::overlay_board_file(path, b, e));
+    ASSERT_FALSE(files::overlay_board_file(path, b, e));
     EXPECT_NE(e.to_string().find("override_bad.toml:4:7: display: 'fps' must be from 1 to 1000"), std::string::npos)
         << e.to_string();
     EXPECT_EQ(fields(b), fields(before));
-    ASSERT_FALSE(world::overlay_board_file(testing::TempDir(), b, e));
+    ASSERT_FALSE(files::overlay_board_file(testing::TempDir(), b, e));
     EXPECT_NE(e.to_string().find("the board override: it is a directory"), std::string::npos) << e.to_string();
 }
 

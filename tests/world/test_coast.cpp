@@ -1,4 +1,4 @@
-// The coast (world::Coast, docs/accuracy.md "The long run"): coasting bodies in every engine
+// The coast (geo::Coast, docs/accuracy.md "The long run"): coasting bodies in every engine
 // against the exact discrete path, the same steps (speed * dt each), the same wraps at the
 // limit circle, the same K, computed in long double from the closed form of a geodesic, at
 // K = -1, 0 and +1. The tests below hold each engine to the bound it meets for as long as it

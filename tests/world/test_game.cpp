@@ -11,10 +11,11 @@
 
 #include "game_world.hpp"
 #include "geometry/reference.hpp"
-#include "world/dump.hpp"
+#include "files/dump.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
+using namespace noneuclid::files;
 using noneuclid::fx::fixed;
 using noneuclid::geo::Polar;
 using noneuclid::test::count;

@@ -5,11 +5,12 @@
 #include <string>
 
 #include "game_world.hpp"
-#include "world/dump.hpp"
-#include "world/scene_file.hpp"
+#include "files/dump.hpp"
+#include "files/scene_file.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
+using namespace noneuclid::files;
 using noneuclid::test::count;
 using noneuclid::test::game_scene;
 

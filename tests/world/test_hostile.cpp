@@ -7,9 +7,9 @@
 #include <regex>
 #include <string>
 
-#include "world/board.hpp"
+#include "files/board.hpp"
 #include "world/quote.hpp"
-#include "world/scene_file.hpp"
+#include "files/scene_file.hpp"
 
 namespace {
 
@@ -150,15 +150,15 @@ TEST(HostileToml, EveryInputGetsOneSentenceWithItsPlaceInScenesAndBoards) {
     for (const Hostile& h : kHostile) {
         SCOPED_TRACE(printable(h.text));
         world::Scene s;
-        world::SceneError e;
-        ASSERT_FALSE(world::parse_scene(h.text, "t.toml", s, e));
+        files::SceneError e;
+        ASSERT_FALSE(files::parse_scene(h.text, "t.toml", s, e));
         const std::string where = "t.toml:" + std::to_string(h.line) + ":" + std::to_string(h.column) + ": not valid TOML: ";
         EXPECT_EQ(e.to_string().rfind(where, 0), 0u) << e.to_string();
         EXPECT_NE(e.message.find(h.says), std::string::npos) << e.to_string();
         expect_one_clean_line(e.to_string());
-        world::Board b;
-        world::BoardError be;
-        ASSERT_FALSE(world::parse_board(h.text, "t.toml", b, be));
+        files::Board b;
+        files::BoardError be;
+        ASSERT_FALSE(files::parse_board(h.text, "t.toml", b, be));
         EXPECT_EQ(be.to_string(), e.to_string());
     }
 }
@@ -186,11 +186,11 @@ TEST(HostileToml, TomlThatIsFineStillLoads) {
         "[ \"grid\" . \"\" ]\n"  // not a scene's key: refused by the scene's reader, not by the guard
         ;
     world::Scene s;
-    world::SceneError e;
-    ASSERT_FALSE(world::parse_scene(text, "fine.toml", s, e));
+    files::SceneError e;
+    ASSERT_FALSE(files::parse_scene(text, "fine.toml", s, e));
     // Refused by the scene's reader (no such keys in a grid), not by the guard or toml++.
     EXPECT_NE(e.to_string().find(": grid: unknown key '"), std::string::npos) << e.to_string();
-    ASSERT_TRUE(world::parse_scene(text.substr(0, text.rfind("1979-05-27tz")), "fine.toml", s, e)) << e.to_string();
+    ASSERT_TRUE(files::parse_scene(text.substr(0, text.rfind("1979-05-27tz")), "fine.toml", s, e)) << e.to_string();
     EXPECT_EQ(s.curvature, 0.5);
     ASSERT_EQ(s.bodies.size(), 12u + 3u);  // the radial grid's lines, then the bodies
     const world::SceneBody* b = &s.bodies[12];
@@ -231,15 +231,15 @@ TEST(Messages, SceneFileContentIsQuotedEscapedAndShort) {
     for (const Echo& c : cases) {
         SCOPED_TRACE(printable(c.text));
         world::Scene s;
-        world::SceneError e;
-        ASSERT_FALSE(world::parse_scene(c.text, "m.toml", s, e));
+        files::SceneError e;
+        ASSERT_FALSE(files::parse_scene(c.text, "m.toml", s, e));
         EXPECT_NE(e.to_string().find(c.shows), std::string::npos) << e.to_string();
         expect_one_clean_line(e.to_string());
     }
     // The file's name too: it may come from a file (a board's scene, a recording's).
     world::Scene s;
-    world::SceneError e;
-    EXPECT_FALSE(world::load_scene_file("/nonexistent/\x1b[2J.toml", s, e));
+    files::SceneError e;
+    EXPECT_FALSE(files::load_scene_file("/nonexistent/\x1b[2J.toml", s, e));
     EXPECT_EQ(e.to_string().rfind("/nonexistent/\\x1b[2J.toml: the scene file: cannot read it", 0), 0u) << e.to_string();
     expect_one_clean_line(e.to_string());
 }
@@ -262,15 +262,15 @@ TEST(Messages, BoardFileContentIsQuotedAndItsNamesArePlain) {
     };
     for (const Echo& c : cases) {
         SCOPED_TRACE(printable(c.text));
-        world::Board b;
-        world::BoardError e;
-        ASSERT_FALSE(world::parse_board(c.text, "b.toml", b, e));
+        files::Board b;
+        files::BoardError e;
+        ASSERT_FALSE(files::parse_board(c.text, "b.toml", b, e));
         EXPECT_NE(e.to_string().find(c.shows), std::string::npos) << e.to_string();
         expect_one_clean_line(e.to_string());
     }
-    world::Board b;
-    world::BoardError e;
-    ASSERT_TRUE(world::parse_board("name = \"Pi été\"\n[display]\ndevice = \"/dev/fb1\"\n", "b.toml", b, e)) << e.to_string();
+    files::Board b;
+    files::BoardError e;
+    ASSERT_TRUE(files::parse_board("name = \"Pi été\"\n[display]\ndevice = \"/dev/fb1\"\n", "b.toml", b, e)) << e.to_string();
     EXPECT_EQ(b.name, "Pi été");
 }
 

@@ -9,11 +9,12 @@
 #include <string>
 
 #include "world/budget.hpp"
-#include "world/scene_file.hpp"
-#include "world/text_file.hpp"
+#include "files/scene_file.hpp"
+#include "files/text_file.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
+using namespace noneuclid::files;
 
 namespace {
 

@@ -10,10 +10,11 @@
 #include <string>
 
 #include "geometry/reference.hpp"
-#include "world/dump.hpp"
+#include "files/dump.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
+using namespace noneuclid::files;
 using noneuclid::fx::fixed;
 using noneuclid::geo::Polar;
 using noneuclid::geo::Pose;
@@ -64,7 +65,7 @@ void check_coasting(double K) {
         const Polar<double> c = D(w.bodies[0].centre);
         // On the geodesic through the start in its direction of travel, at i equal steps.
         const Pose<double> want = ref::move(K, start, i * step);
-        // Each centre is a walk from the coast's start (world::Coast), so the steps' roundings do
+        // Each centre is a walk from the coast's start (geo::Coast), so the steps' roundings do
         // not add up: the bound is one walk's rounding, in fixed point the centre's own Q16.16
         // rounding (2^-17 in r and in theta).
         const double tol = std::is_same_v<T, double> ? 1e-12 : (std::is_same_v<T, float> ? 1e-5 : 5e-5);
@@ -245,7 +246,7 @@ TEST(Determinism, SameActionsSameResultBitForBit) {
                                    {1.5, Action::next_preset, false},    {1.7, Action::spherical, true}};
     EXPECT_EQ(run<World<fixed>>(s, ev, 120), run<World<fixed>>(s, ev, 120));
     EXPECT_EQ(run<World<double>>(s, ev, 120), run<World<double>>(s, ev, 120));
-    using PaperWorld = World<double, true>;
+    using PaperWorld = World<double, noneuclid::geo::Paper>;
     EXPECT_EQ(run<PaperWorld>(s, ev, 60), run<PaperWorld>(s, ev, 60));
     // and the actions did something
     EXPECT_NE(run<World<fixed>>(s, ev, 120), run<World<fixed>>(s, {}, 120));

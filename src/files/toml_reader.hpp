@@ -26,9 +26,9 @@
 
 #include "world/quote.hpp"
 #include "world/scene.hpp"  // Rgb
-#include "world/scene_file.hpp"  // SceneError
+#include "files/scene_file.hpp"  // SceneError
 
-namespace noneuclid::world::tomlr {
+namespace noneuclid::files::tomlr {
 
 // Thrown inside the parser, caught at the top, turned into a SceneError.
 struct Bad {
@@ -79,7 +79,7 @@ public:
             if (!ok) {
                 std::string list;
                 for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
-                throw Bad{key.source(), context_ + "unknown key " + quote(key.str()) + " (expected one of: " + list + ")"};
+                throw Bad{key.source(), context_ + "unknown key " + world::quote(key.str()) + " (expected one of: " + list + ")"};
             }
         }
     }
@@ -96,10 +96,10 @@ public:
         else if (auto i = n.as_integer())
             v = static_cast<double>(i->get());
         else
-            throw Bad{n.source(), context_ + "expected a number for " + quote(key) + " (" + what + "), found " + type_name(n)};
+            throw Bad{n.source(), context_ + "expected a number for " + world::quote(key) + " (" + what + "), found " + type_name(n)};
         if (!std::isfinite(v) || v < lo || v > hi) {
             std::ostringstream m;
-            m << context_ << quote(key) << " must be from " << lo << " to " << hi << " (" << what << "), found " << v;
+            m << context_ << world::quote(key) << " must be from " << lo << " to " << hi << " (" << what << "), found " << v;
             throw Bad{n.source(), m.str()};
         }
         return v;
@@ -108,32 +108,32 @@ public:
         const toml::node* n = t_.get(key);
         if (!n) return fallback;
         if (auto b = n->as_boolean()) return b->get();
-        throw Bad{n->source(), context_ + "expected true or false for " + quote(key) + ", found " + type_name(*n)};
+        throw Bad{n->source(), context_ + "expected true or false for " + world::quote(key) + ", found " + type_name(*n)};
     }
     std::string string(const char* key, const std::string& fallback) const {
         const toml::node* n = t_.get(key);
         if (!n) return fallback;
         if (auto s = n->as_string()) return s->get();
-        throw Bad{n->source(), context_ + "expected a string for " + quote(key) + ", found " + type_name(*n)};
+        throw Bad{n->source(), context_ + "expected a string for " + world::quote(key) + ", found " + type_name(*n)};
     }
     // A string that is shown or used as it is (a device path, a chip label, a scene's path): no
     // control characters in it (world::is_plain).
     std::string plain_string(const char* key, const std::string& fallback) const {
         std::string v = string(key, fallback);
-        if (!is_plain(v)) throw Bad{t_.get(key)->source(), not_plain(key, v)};
+        if (!world::is_plain(v)) throw Bad{t_.get(key)->source(), not_plain(key, v)};
         return v;
     }
     std::string not_plain(const std::string& key, const std::string& v) const {
-        return context_ + "expected " + quote(key) + " without control characters, found " + quote(v);
+        return context_ + "expected " + world::quote(key) + " without control characters, found " + world::quote(v);
     }
     long integer(const char* key, long fallback, long lo, long hi, const char* what) const {
         const toml::node* n = t_.get(key);
         if (!n) return fallback;
         auto i = n->as_integer();
-        if (!i) throw Bad{n->source(), context_ + "expected a whole number for " + quote(key) + " (" + what + "), found " + type_name(*n)};
+        if (!i) throw Bad{n->source(), context_ + "expected a whole number for " + world::quote(key) + " (" + what + "), found " + type_name(*n)};
         if (i->get() < lo || i->get() > hi) {
             std::ostringstream m;
-            m << context_ << quote(key) << " must be from " << lo << " to " << hi << " (" << what << "), found " << i->get();
+            m << context_ << world::quote(key) << " must be from " << lo << " to " << hi << " (" << what << "), found " << i->get();
             throw Bad{n->source(), m.str()};
         }
         return static_cast<long>(i->get());
@@ -144,21 +144,21 @@ public:
         if (!n) return false;
         const toml::array* arr = n->as_array();
         if (!arr || arr->size() != 2)
-            throw Bad{n->source(), context_ + "expected " + quote(key) + " = [" + what + "], found " +
+            throw Bad{n->source(), context_ + "expected " + world::quote(key) + " = [" + what + "], found " +
                                        (arr ? "an array of " + std::to_string(arr->size()) : std::string(type_name(*n)))};
         a = as_number(*arr->get(0), key, alo, ahi, what);
         b = as_number(*arr->get(1), key, -1e6, 1e6, what);
         return true;
     }
-    Rgb color(const char* key, Rgb fallback) const {
+    world::Rgb color(const char* key, world::Rgb fallback) const {
         const toml::node* n = t_.get(key);
         if (!n) return fallback;
         auto s = n->as_string();
         const std::string v = s ? s->get() : "";
         auto hex = [](char c) { return std::isxdigit(static_cast<unsigned char>(c)) != 0; };
         if (!s || v.size() != 7 || v[0] != '#' || !std::all_of(v.begin() + 1, v.end(), hex))
-            throw Bad{n->source(), context_ + "expected a colour \"#rrggbb\" for " + quote(key) + ", found " +
-                                       (s ? "\"" + printable(v) + "\"" : std::string(type_name(*n)))};
+            throw Bad{n->source(), context_ + "expected a colour \"#rrggbb\" for " + world::quote(key) + ", found " +
+                                       (s ? "\"" + world::printable(v) + "\"" : std::string(type_name(*n)))};
         const unsigned long x = std::stoul(v.substr(1), nullptr, 16);
         return {static_cast<uint8_t>(x >> 16), static_cast<uint8_t>(x >> 8), static_cast<uint8_t>(x)};
     }
@@ -194,11 +194,11 @@ bool parse_toml(const std::string& text, const std::string& name, SceneError& er
     } catch (const toml::parse_error& e) {
         // Its description may name a key or show a character of the file: quoted like ours.
         error = {name, static_cast<long>(e.source().begin.line), static_cast<long>(e.source().begin.column),
-                 "not valid TOML: " + printable(e.description(), kSentenceLimit, false)};
+                 "not valid TOML: " + world::printable(e.description(), world::kSentenceLimit, false)};
     } catch (const Bad& b) {
         error = {name, static_cast<long>(b.where.begin.line), static_cast<long>(b.where.begin.column), b.message};
     }
     return false;
 }
 
-}  // namespace noneuclid::world::tomlr
+}  // namespace noneuclid::files::tomlr

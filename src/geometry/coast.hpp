@@ -5,16 +5,17 @@
 // In fixed point the start is kept in finer numbers than Q16.16 (r in Q24, the angles as binary
 // angles: a turn adds exactly, and the limit circle's theta + pi and 2R - r round nothing), the
 // distance walked is the exact sum of the steps' speed * dt, and the walk is fx::coast_walk's.
-// World::step_body moves every engine's bodies but Paper's this way.
+// The exact engine (geometry/engine.hpp) moves bodies this way. A body here is anything with
+// centre, travel, facing, accel_dir, speed and a Coast<T> `coast` (world::Body).
 #pragma once
 
 #include <cstdint>
 #include <type_traits>
 
-#include "fixed/coast.hpp"
+#include "geometry/fx/coast.hpp"
 #include "geometry/geometry.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::geo {
 
 // The longest coast, in world units: within fx::coast_walk's domain (sqrt 10).
 inline constexpr int kCoastLength = 3;
@@ -32,7 +33,7 @@ struct CoastNumbers {
     static T reflect(T R, T r) { return T(2) * R - r > T(0) ? T(2) * R - r : T(0); }  // 2R - r, or 0
     static T angle_of(T radians) { return radians; }
     static T radians(T a) { return a; }
-    static T opposite(T a) { return geo::wrap_pi(a + geo::pi_v<T>); }
+    static T opposite(T a) { return wrap_pi(a + pi_v<T>); }
     static distance step(T speed, T dt) { return distance(speed) * distance(dt); }
     static distance longest() { return distance(kCoastLength); }
     struct start {};  // what every walk of a coast shares: nothing here
@@ -74,7 +75,7 @@ struct Coast {
     T K{};               // the curvature it is walked in
     Length next_r{};     // where the next coast starts (the last step's end, wrapped if it
     Angle next_theta{}, next_chi{};  // was), in the coast's numbers
-    geo::Polar<T> left;  // the centre and direction of travel the last step left: a body
+    Polar<T> left;  // the centre and direction of travel the last step left: a body
     T left_travel{};     // found elsewhere (a change of velocity, a reset) starts a new coast
     bool on = false;     // a coast has been walked
     bool fresh = false;  // the next step starts a new coast at next_* (after a wrap)
@@ -91,14 +92,14 @@ void walk_coast(T K, const Coast<T>& c, typename Coast<T>::Length& r, typename C
             r = e.r24, theta = c.theta0 + e.bearing, chi = c.chi0 + e.turn, turn = e.turn.to_radians();
             return;
         }
-        // Outside its domain (a step longer than sqrt 10, or K beyond +-1): geo::walk.
+        // Outside its domain (a step longer than sqrt 10, or K beyond +-1): walk.
         using N = typename Coast<T>::Numbers;
-        const geo::Polar<T> start{N::scalar(c.r0), c.theta0.to_radians()};
+        const Polar<T> start{N::scalar(c.r0), c.theta0.to_radians()};
         const fx::fixed D = fx::fixed::from_raw(fx::detail::saturate32((c.walked + (int64_t{1} << 15)) >> 16));
-        const geo::Walk<T> w = geo::walk(K, start, c.chi0.to_radians(), D);
+        const Walk<T> w = walk(K, start, c.chi0.to_radians(), D);
         r = N::length_of(w.end.r), theta = N::angle_of(w.end.theta), chi = N::angle_of(w.heading), turn = w.turn;
     } else {
-        const geo::Walk<T> w = geo::walk(K, geo::Polar<T>{c.r0, c.theta0}, c.chi0, T(c.walked));
+        const Walk<T> w = walk(K, Polar<T>{c.r0, c.theta0}, c.chi0, T(c.walked));
         r = w.end.r, theta = w.end.theta, chi = w.heading, turn = w.turn;
     }
 }
@@ -126,8 +127,8 @@ void coast_step(T K, Body& b, T dt) {
     typename N::angle theta{}, chi{};
     T turn{};
     walk_coast(K, c, r, theta, chi, turn);
-    const T facing = geo::wrap_pi(b.facing + (turn - c.turn));
-    b.accel_dir = geo::wrap_pi(b.accel_dir + (facing - b.facing));
+    const T facing = wrap_pi(b.facing + (turn - c.turn));
+    b.accel_dir = wrap_pi(b.accel_dir + (facing - b.facing));
     b.facing = facing;
     b.centre = {N::scalar(r), N::radians(theta)};
     b.travel = N::radians(chi);
@@ -137,10 +138,10 @@ void coast_step(T K, Body& b, T dt) {
 // The limit circle's wrap of a centre that has just walked its coast: the next coast starts at
 // (2R - r, theta + pi) in the coast's numbers; returns that centre.
 template <class T>
-geo::Polar<T> coast_wrap(Coast<T>& c, T R) {
+Polar<T> coast_wrap(Coast<T>& c, T R) {
     using N = CoastNumbers<T>;
     c.next_r = N::reflect(R, c.next_r), c.next_theta = N::opposite(c.next_theta), c.fresh = true;
     return {N::scalar(c.next_r), N::radians(c.next_theta)};
 }
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::geo

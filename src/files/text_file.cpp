@@ -1,4 +1,4 @@
-#include "world/text_file.hpp"
+#include "files/text_file.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <system_error>
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 
 namespace {
 // A limit: "64 KiB", "1 MiB".
@@ -57,4 +57,4 @@ bool read_text_file(const std::string& path, std::size_t limit, const char* what
     return true;
 }
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "world/quote.hpp"
-#include "world/toml_reader.hpp"
+#include "files/toml_reader.hpp"
 
-namespace noneuclid::world::tomlr {
+namespace noneuclid::files::tomlr {
 
 namespace {
 
@@ -39,9 +39,9 @@ bool table_header(std::string_view text, std::size_t i, std::string& message) {
     if (k < text.size()) {
         char32_t c = 0;
         std::size_t len = 1;
-        if (!utf8_decode(text, k, c, len))
+        if (!world::utf8_decode(text, k, c, len))
             len = 1;
-        found = text[k] == '\n' || text[k] == '\r' ? "the end of the line" : quote(text.substr(k, len));
+        found = text[k] == '\n' || text[k] == '\r' ? "the end of the line" : world::quote(text.substr(k, len));
     }
     message = std::string("expected a table's name after '") + (array ? "[[" : "[") + "', found " + found;
     return false;
@@ -79,7 +79,7 @@ bool date_time(std::string_view text, std::size_t i, std::string& message) {
         found = std::string(text.substr(i, k + 2 - i));
     if (found.empty())
         return true;
-    message = "expected a date and a time (YYYY-MM-DDTHH:MM:SS), found " + quote(found);
+    message = "expected a date and a time (YYYY-MM-DDTHH:MM:SS), found " + world::quote(found);
     return false;
 }
 
@@ -101,8 +101,8 @@ public:
         while (i_ < text_.size()) {
             char32_t c = 0;
             std::size_t len = 0;
-            if (!utf8_decode(text_, i_, c, len))
-                return fail("the byte " + printable(text_.substr(i_, 1)) + " is not UTF-8 (save the file as UTF-8)");
+            if (!world::utf8_decode(text_, i_, c, len))
+                return fail("the byte " + world::printable(text_.substr(i_, 1)) + " is not UTF-8 (save the file as UTF-8)");
             if (c == '\r') {
                 if (i_ + 1 < text_.size() && text_[i_ + 1] == '\n') {
                     ++i_;  // CR LF: a line end like LF, handled below
@@ -111,7 +111,7 @@ public:
                 return fail("a carriage return (\\x0d) not followed by a line feed: lines end with LF or CR LF");
             }
             if ((c < 0x20 && c != '\t' && c != '\n') || c == 0x7F)
-                return fail("the control character " + printable(text_.substr(i_, 1))
+                return fail("the control character " + world::printable(text_.substr(i_, 1))
                             + " (TOML allows only tab and line ends; write it as an escape in a string)");
             if (line_continuation_) {
                 if (c == ' ' || c == '\t' || c == '\n') {
@@ -165,7 +165,7 @@ private:
         return false;
     }
     std::string character(char32_t c, std::size_t len) const {
-        return quote(text_.substr(i_, len)) + " (" + code_point(c) + ")";
+        return world::quote(text_.substr(i_, len)) + " (" + code_point(c) + ")";
     }
     // The run of `q` starting at i (a closing delimiter and up to two quotes of content).
     std::size_t run_of(char q) const {
@@ -306,4 +306,4 @@ bool toml_guard(std::string_view text, long& line, long& column, std::string& me
     return Guard(text, line, column, message).run();
 }
 
-}  // namespace noneuclid::world::tomlr
+}  // namespace noneuclid::files::tomlr

@@ -25,7 +25,7 @@
 #include "world/image.hpp"
 #include "world/scene.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 
 struct SceneError {
     std::string file;
@@ -38,15 +38,15 @@ struct SceneError {
 // Reads the image file at `path` for a texture (texture = "file.png"; app/setup.cpp reads PNG
 // through the platform). False with one sentence (no full stop) in `why`: what is wrong with
 // the image and how to fix it. Built-in images ("builtin:...") never reach it.
-using ImageReader = std::function<bool(const std::string& path, Image& out, std::string& why)>;
+using ImageReader = std::function<bool(const std::string& path, world::Image& out, std::string& why)>;
 
 // Reads a scene file. On failure returns false and fills `error`. A texture's file is read with
 // `images`, its path taken relative to the scene file's directory; without a reader only the
 // built-in images can be named.
-bool load_scene_file(const std::string& path, Scene& out, SceneError& error, const ImageReader& images = {});
+bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images = {});
 // The same from a string (`name` is used in messages in place of a path, and as the path that
 // textures are relative to).
-bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error,
+bool parse_scene(const std::string& text, const std::string& name, world::Scene& out, SceneError& error,
                  const ImageReader& images = {});
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

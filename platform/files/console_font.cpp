@@ -1,4 +1,4 @@
-#include "desktop/console_font.hpp"
+#include "files/console_font.hpp"
 
 #include <zlib.h>
 

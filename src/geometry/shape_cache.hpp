@@ -1,10 +1,12 @@
 // What drawing a rigid body needs that changes only with K and its shape: each vertex as its
 // local 3-vector about the centre, and each edge's length with the first halving weight of its
-// adaptive tessellation (render/edge_curve.hpp; a rigid motion keeps the edge's length, so it
-// comes from the local polar vertices). One per body, owned by the drawing's scratch
-// (DrawScratch, ParallelScratch), made for the body when the scratch is prepared (this
-// allocates), and refreshed in place, without allocating, when K differs from the K it was
-// last refreshed at or the body took a new shape of as many vertices (world::Body::shape). The
+// adaptive tessellation (geometry/edge_curve.hpp; a rigid motion keeps the edge's length, so it
+// comes from the local polar vertices). One per body (the exact engine's Cache,
+// geometry/engine.hpp), owned by the drawing's scratch (render's DrawScratch, ParallelScratch),
+// made for the body when the scratch is prepared (this allocates), and refreshed in place,
+// without allocating, when K differs from the K it was last refreshed at or the body took a new
+// shape of as many vertices (its `shape` count). A body here is anything with `local` (its
+// vertices in local polar coordinates), `shape` and `closed()` (world::Body). The
 // threaded frame hands each body to one thread, which alone refreshes
 // that body's cache: no cache is written by two threads at once.
 #pragma once
@@ -15,10 +17,9 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
-#include "render/edge_curve.hpp"
-#include "world/world.hpp"
+#include "geometry/edge_curve.hpp"
 
-namespace noneuclid::render {
+namespace noneuclid::geo {
 
 template <class T>
 struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be another thread's)
@@ -26,7 +27,7 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     T K{};
     uint32_t shape = 0;  // the body's shape count it was made for (world::Body::shape)
     bool valid = false;
-    std::vector<geo::Vec3<T>> local;  // per vertex
+    std::vector<Vec3<T>> local;  // per vertex
     std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
     // Per edge: its length, u = K (d/2)^2 and the halving weight h = half(u) of edge_curve, and
     // whether it is walked (its ends antipodal on the sphere, or too long for the weights:
@@ -42,13 +43,14 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     // every K, with nothing computed.
     enum Radial : uint8_t { kNotRadial, kSameSide, kOppositeSides };
     std::vector<T> cos_phi, sin_phi;
-    std::vector<geo::HalfSine<T>> half_sine;
+    std::vector<HalfSine<T>> half_sine;
     std::vector<uint8_t> radial;
     bool all_radial = false;
 
     // Sized for body b, its parts that do not depend on K set; not valid until refreshed.
-    void make(const world::Body<T>& b) {
-        const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (b.desc->closed ? n : n - 1);
+    template <class B>
+    void make(const B& b) {
+        const std::size_t n = b.local.size(), edges = n < 2 ? 0 : (b.closed() ? n : n - 1);
         valid = false;
         local.assign(n, {});
         root.assign(n, T{});
@@ -61,17 +63,17 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     }
     // The parts that depend on the shape alone, in place (a game's asteroid takes a new shape
     // in a body of the same vertex count: nothing is allocated).
-    void set_angles(const world::Body<T>& b) {
+    template <class B>
+    void set_angles(const B& b) {
         using std::cos, std::sin;  // and fx:: ones by ADL for fixed
-        using geo::sine_of_half;
         const std::size_t n = b.local.size();
         for (std::size_t i = 0; i < n; ++i) cos_phi[i] = cos(b.local[i].theta), sin_phi[i] = sin(b.local[i].theta);
         all_radial = true;
         for (std::size_t e = 0; e < half_sine.size(); ++e) {
-            const geo::Polar<T>&p = b.local[e], &q = b.local[(e + 1) % n];
+            const Polar<T>&p = b.local[e], &q = b.local[(e + 1) % n];
             half_sine[e] = sine_of_half(p.theta - q.theta);
             const T turn = p.theta > q.theta ? p.theta - q.theta : q.theta - p.theta;
-            radial[e] = p.r == T(0) || q.r == T(0) || turn == geo::pi_v<T> ? kOppositeSides
+            radial[e] = p.r == T(0) || q.r == T(0) || turn == pi_v<T> ? kOppositeSides
                         : turn == T(0)                                     ? kSameSide
                                                                            : kNotRadial;
             all_radial = all_radial && radial[e] != kNotRadial;
@@ -81,28 +83,28 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
 
     // The cache at curvature K for body b (the body it was made for), refreshed first if K
     // changed since.
-    const ShapeCache& refresh(T curvature, const world::Body<T>& b) {
+    template <class B>
+    const ShapeCache& refresh(T curvature, const B& b) {
         if (shape != b.shape) set_angles(b);
         if (valid && K == curvature) return *this;
         const std::size_t n = b.local.size(), edges = walked.size();
-        for (std::size_t i = 0; i < n; ++i) {  // geo::to_vec and root_S_K, S_K taken once
-            const T rho = b.local[i].r, s = geo::S_K(curvature, rho);
-            local[i] = {geo::C_K(curvature, rho), s * cos_phi[i], s * sin_phi[i]};
-            if (!all_radial) root[i] = geo::clamped_root(s);
+        for (std::size_t i = 0; i < n; ++i) {  // to_vec and root_S_K, S_K taken once
+            const T rho = b.local[i].r, s = S_K(curvature, rho);
+            local[i] = {C_K(curvature, rho), s * cos_phi[i], s * sin_phi[i]};
+            if (!all_radial) root[i] = clamped_root(s);
         }
-        using geo::Sf;  // and fx::Sf by ADL for fixed
         for (std::size_t e = 0; e < edges; ++e) {
             const std::size_t f = (e + 1) % n;
             const T r1 = b.local[e].r, r2 = b.local[f].r;
-            // geo::distance(K, b.local[e], b.local[f]), from the kept parts (bit for bit), or exactly.
+            // distance(K, b.local[e], b.local[f]), from the kept parts (bit for bit), or exactly.
             const T d = radial[e] == kSameSide        ? (r1 > r2 ? r1 - r2 : r2 - r1)
                         : radial[e] == kOppositeSides ? r1 + r2
-                                                      : geo::distance_from(curvature, r1, r2, root[e], root[f], half_sine[e]);
+                                                      : distance_from(curvature, r1, r2, root[e], root[f], half_sine[e]);
             length[e] = d;
             u[e] = Math::u_of(curvature, d);
             // (Sf only where antipodal_edge needs it: K d^2 > 2.)
             walked[e] = Math::too_long(u[e]) ||
-                        (curvature * d * d > T(2) && geo::antipodal_edge(curvature, d, Sf(curvature * d * d)));
+                        (curvature * d * d > T(2) && antipodal_edge(curvature, d, Sf(curvature * d * d)));
             h[e] = walked[e] ? typename Math::W{} : Math::half(u[e]);
         }
         K = curvature, valid = true;
@@ -110,11 +112,4 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     }
 };
 
-// A cache for each of a world's bodies, made for them.
-template <class W>
-void make_shape_caches(const W& world, std::vector<ShapeCache<typename W::scalar>>& caches) {
-    caches.resize(world.bodies.size());
-    for (std::size_t i = 0; i < caches.size(); ++i) caches[i].make(world.bodies[i]);
-}
-
-}  // namespace noneuclid::render
+}  // namespace noneuclid::geo

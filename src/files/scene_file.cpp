@@ -1,4 +1,4 @@
-#include "world/scene_file.hpp"
+#include "files/scene_file.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -6,10 +6,10 @@
 #include "world/game.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
-#include "world/text_file.hpp"
-#include "world/toml_reader.hpp"
+#include "files/text_file.hpp"
+#include "files/toml_reader.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 namespace {
 
 using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
@@ -19,24 +19,24 @@ using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 struct Images {
     const ImageReader& reader;
     std::string dir;  // the scene file's directory, with its '/', or ""
-    std::vector<std::pair<std::string, std::shared_ptr<const Image>>> read;
+    std::vector<std::pair<std::string, std::shared_ptr<const world::Image>>> read;
 
     // The image `key` names in the table read by r (its value as written), or a Bad at its place.
-    std::shared_ptr<const Image> get(const Reader& r, const char* key, const std::string& context) {
+    std::shared_ptr<const world::Image> get(const Reader& r, const char* key, const std::string& context) {
         const std::string name = r.plain_string(key, "");
         const toml::node* node = r.table().get(key);
-        const std::string shown = context + "texture " + quote(name) + ": ";
+        const std::string shown = context + "texture " + world::quote(name) + ": ";
         if (name.empty()) throw Bad{node->source(), shown + "expected a PNG file's name or a built-in image"};
-        const bool builtin = name.rfind(kBuiltinImagePrefix, 0) == 0;
+        const bool builtin = name.rfind(world::kBuiltinImagePrefix, 0) == 0;
         const std::string path = builtin || name[0] == '/' ? name : dir + name;
         for (const auto& [p, image] : read)
             if (p == path) return image;
-        auto image = std::make_shared<Image>();
+        auto image = std::make_shared<world::Image>();
         std::string why;
         if (builtin) {
-            if (!builtin_image(name, *image)) {
+            if (!world::builtin_image(name, *image)) {
                 std::string names;
-                for (const char* const* n = builtin_image_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
+                for (const char* const* n = world::builtin_image_names(); *n; ++n) names += std::string(names.empty() ? "" : ", ") + *n;
                 throw Bad{node->source(), shown + "there is no such built-in image (" + names + ")"};
             }
         } else if (!reader) {
@@ -52,8 +52,8 @@ struct Images {
 // fill, texture, texture_scale, texture_filter (with `prefix`: the game's asteroid_fill, ...).
 struct Surface {
     bool filled = false;
-    Rgb fill;
-    std::shared_ptr<const Image> texture;
+    world::Rgb fill;
+    std::shared_ptr<const world::Image> texture;
     double scale = 1;
     bool bilinear = false;
 };
@@ -66,25 +66,25 @@ Surface read_surface(const Reader& r, const std::string& prefix, const std::stri
     if (const toml::node* f = r.table().get(filter)) {
         const std::string v = r.string(filter.c_str(), "");
         if (v != "nearest" && v != "bilinear")
-            throw Bad{f->source(), context + "expected " + quote(filter) + " = \"nearest\" or \"bilinear\", found \"" +
-                                       printable(v) + "\""};
+            throw Bad{f->source(), context + "expected " + world::quote(filter) + " = \"nearest\" or \"bilinear\", found \"" +
+                                       world::printable(v) + "\""};
         s.bilinear = v == "bilinear";
     }
     return s;
 }
 
-void read_body(const toml::table& t, int index, Scene& scene, Images& images) {
-    SceneBody b;
+void read_body(const toml::table& t, int index, world::Scene& scene, Images& images) {
+    world::SceneBody b;
     {
         const Reader pre(t, "");
         b.name = pre.string("name", "body" + std::to_string(index + 1));
     }
-    const Reader r(t, "body " + quote(b.name) + ": ");
+    const Reader r(t, "body " + world::quote(b.name) + ": ");
     r.only({"name", "position", "facing", "velocity", "acceleration", "spin", "color", "closed", "tessellation",
             "vertices", "controlled", "grid", "fill", "texture", "texture_scale", "texture_filter"});
-    r.pair("position", b.r, b.theta_deg, 0, Ranges::kReach, "r, theta in degrees");
+    r.pair("position", b.r, b.theta_deg, 0, world::Ranges::kReach, "r, theta in degrees");
     b.facing_deg = r.number("facing", 0, -1e6, 1e6, "degrees");
-    r.pair("velocity", b.speed, b.direction_deg, 0, Ranges::kSpeed, "speed in world units per second, direction in degrees");
+    r.pair("velocity", b.speed, b.direction_deg, 0, world::Ranges::kSpeed, "speed in world units per second, direction in degrees");
     r.pair("acceleration", b.accel, b.accel_direction_deg, 0, 1e3, "world units per second^2, direction in degrees");
     b.spin_deg = r.number("spin", 0, -1e6, 1e6, "degrees per second");
     b.color = r.color("color", b.color);
@@ -93,48 +93,48 @@ void read_body(const toml::table& t, int index, Scene& scene, Images& images) {
     b.controlled = r.boolean("controlled", b.name == "ship");
     b.grid = r.boolean("grid", false);
     const toml::node* v = t.get("vertices");
-    if (!v) throw Bad{t.source(), "body " + quote(b.name) + ": expected 'vertices' = [[rho, phi], ...], found none"};
+    if (!v) throw Bad{t.source(), "body " + world::quote(b.name) + ": expected 'vertices' = [[rho, phi], ...], found none"};
     const toml::array* arr = v->as_array();
     if (!arr || arr->empty())
-        throw Bad{v->source(), "body " + quote(b.name) + ": expected 'vertices' = [[rho, phi], ...] with at least one vertex, found " +
+        throw Bad{v->source(), "body " + world::quote(b.name) + ": expected 'vertices' = [[rho, phi], ...] with at least one vertex, found " +
                                    (arr ? "an empty array" : std::string(type_name(*v)))};
     for (const toml::node& e : *arr) {
         const toml::array* p = e.as_array();
         if (!p || p->size() != 2)
-            throw Bad{e.source(), "body " + quote(b.name) + ": expected each vertex as [rho, phi in degrees], found " +
+            throw Bad{e.source(), "body " + world::quote(b.name) + ": expected each vertex as [rho, phi in degrees], found " +
                                       (p ? "an array of " + std::to_string(p->size()) : std::string(type_name(e)))};
-        SceneBody::Vertex vx;
-        vx.rho = r.as_number(*p->get(0), "vertices", 0, Ranges::kBodyRadius, "rho, distance from the centre");
+        world::SceneBody::Vertex vx;
+        vx.rho = r.as_number(*p->get(0), "vertices", 0, world::Ranges::kBodyRadius, "rho, distance from the centre");
         vx.phi_deg = r.as_number(*p->get(1), "vertices", -1e6, 1e6, "phi in degrees from the facing");
         b.vertices.push_back(vx);
     }
-    const Surface surface = read_surface(r, "", "body " + quote(b.name) + ": ", images, {});
+    const Surface surface = read_surface(r, "", "body " + world::quote(b.name) + ": ", images, {});
     b.filled = surface.filled, b.fill = surface.fill, b.texture = surface.texture;
     b.texture_scale = surface.scale, b.texture_bilinear = surface.bilinear;
     if ((b.filled || b.texture) && (!b.closed || b.vertices.size() < 3))
-        throw Bad{t.source(), "body " + quote(b.name) + ": a fill or a texture needs a closed outline of 3 or more vertices"};
+        throw Bad{t.source(), "body " + world::quote(b.name) + ": a fill or a texture needs a closed outline of 3 or more vertices"};
     std::string why;
-    if (!body_within_ranges(b, scene.limit_radius, why)) throw Bad{t.source(), why};
+    if (!world::body_within_ranges(b, scene.limit_radius, why)) throw Bad{t.source(), why};
     scene.bodies.push_back(std::move(b));
 }
 
-void read_grid(const toml::table& t, Scene& scene) {
+void read_grid(const toml::table& t, world::Scene& scene) {
     const Reader r(t, "grid: ");
     r.only({"kind", "spacing", "lines", "length", "step", "color"});
     const std::string kind = r.string("kind", "axes");
-    const double length = r.number("length", scene.limit_radius, 0.01, Ranges::kReach, "world units");
-    const double step = r.number("step", 0.25, 0.001, Ranges::kBodyRadius, "world units between vertices");
-    const Rgb color = r.color("color", {70, 90, 120});
+    const double length = r.number("length", scene.limit_radius, 0.01, world::Ranges::kReach, "world units");
+    const double step = r.number("step", 0.25, 0.001, world::Ranges::kBodyRadius, "world units between vertices");
+    const world::Rgb color = r.color("color", {70, 90, 120});
     std::string why;
     const std::size_t first = scene.bodies.size();
     if (kind == "axes") {
-        if (!add_axis_grid(scene, r.number("spacing", 0.5, 0.01, 1e4, "world units"), length, step, color, why))
+        if (!world::add_axis_grid(scene, r.number("spacing", 0.5, 0.01, 1e4, "world units"), length, step, color, why))
             throw Bad{t.source(), "grid: " + why};
     } else if (kind == "radial") {
-        if (!add_radial_grid(scene, static_cast<int>(r.integer("lines", 12, 1, 360, "lines")), length, step, color, why))
+        if (!world::add_radial_grid(scene, static_cast<int>(r.integer("lines", 12, 1, 360, "lines")), length, step, color, why))
             throw Bad{t.source(), "grid: " + why};
     } else {
-        throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + printable(kind) + "\""};
+        throw Bad{t.get("kind")->source(), "grid: expected kind = \"axes\" or \"radial\", found \"" + world::printable(kind) + "\""};
     }
     // A grid line does not move: its farthest point is its distance from O plus its length.
     double reach = 0, farthest = 0;
@@ -142,11 +142,11 @@ void read_grid(const toml::table& t, Scene& scene) {
         reach = std::max(reach, body_reach(scene.bodies[i], scene.limit_radius));
         farthest = std::max(farthest, scene.bodies[i].r);
     }
-    if (reach > Ranges::kReach) {
+    if (reach > world::Ranges::kReach) {
         std::ostringstream m;
         m << "grid: its lines could reach " << reach << " from O (the farthest line is " << farthest
           << " from O, plus the length " << length << "), past the engines' reach of 2 pi (6.283): a length of at most "
-          << Ranges::kReach - farthest << ", or a lower limit_radius";
+          << world::Ranges::kReach - farthest << ", or a lower limit_radius";
         throw Bad{t.source(), m.str()};
     }
 }
@@ -156,7 +156,7 @@ std::vector<double> numbers(const Reader& r, const char* key, std::size_t n, dou
     const toml::node* node = r.table().get(key);
     const toml::array* a = node ? node->as_array() : nullptr;
     if (node && (!a || (n > 0 && a->size() != n)))
-        throw Bad{node->source(), "game: expected " + quote(key) + " = [" + what + "], found " +
+        throw Bad{node->source(), "game: expected " + world::quote(key) + " = [" + what + "], found " +
                                       (a ? "an array of " + std::to_string(a->size()) : std::string(type_name(*node)))};
     std::vector<double> out;
     if (a)
@@ -165,7 +165,7 @@ std::vector<double> numbers(const Reader& r, const char* key, std::size_t n, dou
 }
 
 // [game]: the Asteroids game's settings (docs/game.md), over the defaults.
-void read_game(const toml::table& t, GameSettings& g, Images& images) {
+void read_game(const toml::table& t, world::GameSettings& g, Images& images) {
     const Reader r(t, "game: ");
     r.only({"seed", "lives", "asteroids", "asteroids_step", "asteroids_max", "sizes", "points", "asteroid_speed",
             "asteroid_spin", "asteroid_vertices", "split_speed", "bullet_speed", "bullet_range", "bullet_cooldown",
@@ -191,13 +191,13 @@ void read_game(const toml::table& t, GameSettings& g, Images& images) {
     if (g.speed_max < g.speed_min || g.speed_max > 3)
         throw Bad{t.get("asteroid_speed")->source(), "game: expected 'asteroid_speed' = [slowest, fastest], from 0 to 3"};
     g.spin_deg = r.number("asteroid_spin", g.spin_deg, 0, 720, "degrees per second, either way");
-    g.vertices = static_cast<int>(r.integer("asteroid_vertices", g.vertices, 5, kGameMaxVertices, "vertices"));
+    g.vertices = static_cast<int>(r.integer("asteroid_vertices", g.vertices, 5, world::kGameMaxVertices, "vertices"));
     g.split_speed = r.number("split_speed", g.split_speed, 0, 3, "world units per second");
     g.bullet_speed = r.number("bullet_speed", g.bullet_speed, 0.1, 10, "world units per second");
     g.bullet_range = r.number("bullet_range", g.bullet_range, 0.1, 6, "world units: under a sphere's circumference");
     g.bullet_cooldown = r.number("bullet_cooldown", g.bullet_cooldown, 0, 10, "seconds");
     g.bullets = static_cast<int>(r.integer("bullets", g.bullets, 1, 64, "bullets in flight at once"));
-    g.ship_speed = r.number("ship_speed", g.ship_speed, 0.05, Ranges::kSpeed, "world units per second");
+    g.ship_speed = r.number("ship_speed", g.ship_speed, 0.05, world::Ranges::kSpeed, "world units per second");
     g.invulnerable = r.number("invulnerable", g.invulnerable, 0, 60, "seconds");
     g.respawn_delay = r.number("respawn_delay", g.respawn_delay, 0, 60, "seconds");
     g.level_pause = r.number("level_pause", g.level_pause, 0, 60, "seconds");
@@ -211,12 +211,12 @@ void read_game(const toml::table& t, GameSettings& g, Images& images) {
     g.asteroid_texture_scale = s.scale, g.asteroid_texture_bilinear = s.bilinear;
 }
 
-void read_scene(const toml::table& root, Scene& s, Images& images) {
+void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
             "game"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
-    s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, Ranges::kLimitRadius, "R in world units");
+    s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, world::Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
     s.turn_rate_deg = r.number("turn_rate", s.turn_rate_deg, 0, 1e5, "degrees per second");
     s.curvature_rate = r.number("curvature_rate", s.curvature_rate, 0, 100, "per second");
@@ -238,7 +238,7 @@ void read_scene(const toml::table& root, Scene& s, Images& images) {
         if (!t) throw Bad{game->source(), std::string("expected a [game] table, found ") + type_name(*game)};
         read_game(*t, s.game, images);
         std::string why;
-        if (!add_game_slots(s, why)) throw Bad{t->source(), "game: " + why};
+        if (!world::add_game_slots(s, why)) throw Bad{t->source(), "game: " + why};
     }
 }
 
@@ -246,21 +246,21 @@ void read_scene(const toml::table& root, Scene& s, Images& images) {
 
 std::string SceneError::to_string() const {
     std::ostringstream o;
-    o << printable(file, kPathLimit);
+    o << world::printable(file, world::kPathLimit);
     if (line > 0) o << ':' << line << ':' << column;
     o << ": " << message;
     return o.str();
 }
 
-bool parse_scene(const std::string& text, const std::string& name, Scene& out, SceneError& error,
+bool parse_scene(const std::string& text, const std::string& name, world::Scene& out, SceneError& error,
                  const ImageReader& reader) {
-    out = Scene{};
+    out = world::Scene{};
     out.name = name;
     Images images{reader, name.substr(0, name.rfind('/') + 1), {}};
     return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_scene(root, out, images); });
 }
 
-bool load_scene_file(const std::string& path, Scene& out, SceneError& error, const ImageReader& images) {
+bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images) {
     std::string text, why;
     if (!read_text_file(path, kSceneFileLimit, "a scene file", text, why)) {
         error = {path, 0, 0, "the scene file: " + why + ": check the path, or name a built-in scene (see --help)"};
@@ -269,4 +269,4 @@ bool load_scene_file(const std::string& path, Scene& out, SceneError& error, con
     return parse_scene(text, path, out, error, images);
 }
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "world/text_file.hpp"
+#include "files/text_file.hpp"
 
 namespace noneuclid::platform {
 
@@ -150,7 +150,7 @@ bool png_header(const std::string& d, uint32_t& width, uint32_t& height, std::st
 
 bool read_texture(const std::string& path, world::Image& out, std::string& why) {
     std::string bytes;
-    if (!world::read_text_file(path, world::kImageFileLimit, "a texture's PNG file", bytes, why)) {
+    if (!files::read_text_file(path, world::kImageFileLimit, "a texture's PNG file", bytes, why)) {
         why = path + ": " + why;
         return false;
     }

@@ -1,9 +1,9 @@
 // Adaptive tessellation on the screen: an edge (a geodesic from P to Q, 3-vectors) is cut in
 // halves, and its halves again, wherever the projected curve departs from the drawn chord by
-// more than kChordTolerance (clip_sink.hpp, grade), and each chord goes to the ClipSink, which
-// clips it to the clip circle. So an edge gets as many points as its picture needs and no
-// more: none inside a straight edge (every edge at K = 0, every edge of the gnomonic view),
-// many where the view stretches it (near the rim at K = +1).
+// more than kChordTolerance (screen_map.hpp, grade), and each chord goes to a sink (CurveSink
+// below; render's ClipSink clips it to the clip circle). So an edge gets as many points as its
+// picture needs and no more: none inside a straight edge (every edge at K = 0, every edge of
+// the gnomonic view), many where the view stretches it (near the rim at K = +1).
 //
 // Every point is the generalised slerp a P + b Q of the edge's ends (docs/design.md), its
 // weights found by halving: the midpoint of the segment between the points of weights
@@ -20,15 +20,27 @@
 #pragma once
 
 #include <cmath>
+#include <concepts>
 #include <cstdint>
 #include <type_traits>
 
 #include "fixed/division.hpp"
 #include "fixed/fixed.hpp"
 #include "geometry/geometry.hpp"
-#include "render/clip_sink.hpp"
+#include "geometry/screen_map.hpp"
 
-namespace noneuclid::render {
+namespace noneuclid::geo {
+
+// Where a curve's chords go: its first point (start), each chord to the next point (chord),
+// the end of a piece (end), and whether a curve through three points all outside the clip
+// circle stays outside it (stays_outside: the sink owns the clip circle).
+template <class S>
+concept CurveSink = requires(S& s, const Spot& p, SubPoint a) {
+    s.start(p);
+    s.chord(p, p);
+    s.end();
+    { s.stays_outside(a, a, a) } -> std::convertible_to<bool>;
+};
 
 inline constexpr int kMaxDepth = 12;
 inline constexpr int kOutsideDepth = 6;
@@ -54,14 +66,14 @@ struct SlerpMath {
         using std::fabs;
         if (fabs(u) <= (std::is_same_v<T, float> ? T(1) / T(64) : T(1e-4)))
             return T(0.5) * (T(1) + u * (T(0.5) + u * (T(5) / T(24) + u * (T(61) / T(720) + u * (T(277) / T(8064))))));
-        return T(0.5) / geo::Cf(u);
+        return T(0.5) / Cf(u);
     }
     static W mid(W a0, W a1, W h) { return h * (a0 + a1); }
     // Whether an edge with this u is too long for the halving weights (h near 4, where the
     // fixed engine's weights would overflow, or u past the range its series covers): such an
-    // edge is first cut in two by a walk (body_screen_points).
+    // edge is first cut in two by a walk (geometry/outline.hpp).
     static bool too_long(U u) { return u > T(2.08) || u < T(-2.2); }
-    static geo::Vec3<T> combine(W a, const geo::Vec3<T>& P, W b, const geo::Vec3<T>& Q) {
+    static Vec3<T> combine(W a, const Vec3<T>& P, W b, const Vec3<T>& Q) {
         return {a * P.w + b * Q.w, a * P.x + b * Q.x, a * P.y + b * Q.y};
     }
 };
@@ -97,7 +109,7 @@ struct SlerpMath<fx::fixed> {
     }
     static W mid(W a0, W a1, W h) { return fx::detail::round_shift((a0 + a1) * h, kFrac); }
     static bool too_long(U u) { return u > 2233382994 || u < -2362232013; }  // 2.08, -2.2
-    static geo::Vec3<fx::fixed> combine(W a, const geo::Vec3<fx::fixed>& P, W b, const geo::Vec3<fx::fixed>& Q) {
+    static Vec3<fx::fixed> combine(W a, const Vec3<fx::fixed>& P, W b, const Vec3<fx::fixed>& Q) {
         auto c = [a, b](fx::fixed p, fx::fixed q) {
             return fx::fixed::from_raw(fx::detail::saturate32(fx::detail::round_shift(a * p.raw() + b * q.raw(), kFrac)));
         };
@@ -105,30 +117,38 @@ struct SlerpMath<fx::fixed> {
     }
 };
 
-// The general evaluator: a 3-vector through geo::project_vec in the engine's scalar, mapped to
-// the screen. (The fixed engine's equidistant view has its own: render/fixed_points.hpp.)
+// The general evaluator: a 3-vector through project_vec in the engine's scalar, mapped to
+// the screen. (The fixed engine's equidistant view has its own: geometry/fx/equidistant_eval.hpp.)
 template <class T>
 struct VecEval {
     using Math = SlerpMath<T>;
     T K;
-    geo::Projection projection;
+    Projection projection;
     const ScreenMap<T>& m;
-    geo::Vec3<T> P{}, Q{};
+    Vec3<T> P{}, Q{};
 
-    void ends(const geo::Vec3<T>& p, const geo::Vec3<T>& q) { P = p, Q = q; }
-    Spot vertex(const geo::Vec3<T>& v) const {
-        const geo::ProjectedPoint<T> pp = geo::project_vec(K, v, projection);
+    void ends(const Vec3<T>& p, const Vec3<T>& q) { P = p, Q = q; }
+    Spot vertex(const Vec3<T>& v) const {
+        const ProjectedPoint<T> pp = project_vec(K, v, projection);
         if (!pp.visible) return {};
-        return spot_at(m, to_pixels(geo::ScreenPoint<T>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
+        return spot_at(m, to_pixels(ScreenPoint<T>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
     }
     Spot point(typename Math::W a, typename Math::W b) const { return vertex(Math::combine(a, P, b, Q)); }
 };
+
+// The evaluator of a view (a projection and a screen map) for scalar T: f(eval) with the
+// general one, VecEval. The fixed scalar's equidistant view has its own kernel
+// (geometry/fx/equidistant_eval.hpp overloads this).
+template <class T, class F>
+void with_view_eval(T K, const ScreenMap<T>& m, Projection p, F&& f) {
+    f(VecEval<T>{K, p, m});
+}
 
 namespace detail {
 // edge_curve past its first midpoint: the piece from a to b (its weights and its ends' spots)
 // at `depth`, cut in halves depth first while the cutting goes on (the header comment). Each
 // chord to the sink in order. Recursive: at most kMaxDepth deep.
-template <class T, class Eval>
+template <class T, class Eval, class Sink>
 struct EdgePieces {
     using Math = SlerpMath<T>;
     using W = typename Math::W;
@@ -136,13 +156,13 @@ struct EdgePieces {
         W a, b;  // the weights of P and Q
         Spot s;
     };
-    EdgePieces(const Eval& e, const ScreenMap<T>& map, ClipSink& s, long& left, bool line, typename Math::U u0, W h0)
+    EdgePieces(const Eval& e, const ScreenMap<T>& map, Sink& s, long& left, bool line, typename Math::U u0, W h0)
         : ev(e), m(map), sink(s), budget(left), straight(line), u(u0) {
         h[0] = h0;
     }
     const Eval& ev;
     const ScreenMap<T>& m;
-    ClipSink& sink;
+    Sink& sink;
     long& budget;
     bool straight;
     typename Math::U u;  // u of the deepest halving weight found so far
@@ -185,12 +205,12 @@ struct EdgePieces {
 // The curve of one edge, from its first point (already given to the sink) to its last, each
 // chord to the sink. u0 = SlerpMath::u_of(K, d) = K (d/2)^2 for the edge's length d, and
 // h0 = half(u0) (the shape cache keeps both). `straight`: the view draws this edge's geodesic
-// as a straight line (geo::straight_geodesics). `budget`: the body's halvings left. The common
+// as a straight line (straight_geodesics). `budget`: the body's halvings left. The common
 // case, a single chord, is decided here; the cutting is detail::EdgePieces.
-template <class T, class Eval>
+template <class T, class Eval, CurveSink Sink>
 [[gnu::always_inline]] inline void edge_curve(const Eval& ev, const ScreenMap<T>& m, const Spot& sp, const Spot& sq,
                                               typename SlerpMath<T>::U u0, typename SlerpMath<T>::W h0, bool straight,
-                                              ClipSink& sink, long& budget) {
+                                              Sink& sink, long& budget) {
     const bool shown = sp.shown && sq.shown, out = !sp.in && !sq.in;
     if (straight && shown) return sink.chord(sp, sq);
     if (out && m.outside_is_ball) return;
@@ -200,8 +220,8 @@ template <class T, class Eval>
     if (g == kFlat) return sink.chord(sp, sq);
     if (out && g != kBent && !mid.in && sink.stays_outside(sp.at, mid.at, sq.at)) return;
     using Math = SlerpMath<T>;
-    detail::EdgePieces<T, Eval> pieces(ev, m, sink, budget, straight, u0, h0);
+    detail::EdgePieces<T, Eval, Sink> pieces(ev, m, sink, budget, straight, u0, h0);
     pieces.cut({Math::one(), Math::zero(), sp}, {Math::zero(), Math::one(), sq}, {h0, h0, mid}, g, 0);
 }
 
-}  // namespace noneuclid::render
+}  // namespace noneuclid::geo

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 
 // The size limits of the inputs (docs/reliability.md).
 inline constexpr std::size_t kSceneFileLimit = std::size_t{1} << 20;    // 1 MiB
@@ -20,4 +20,4 @@ inline constexpr std::size_t kActionsFileLimit = std::size_t{16} << 20; // 16 Mi
 bool read_text_file(const std::string& path, std::size_t limit, const char* what, std::string& out,
                     std::string& error);
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

@@ -26,7 +26,7 @@
 #include "geometry/geometry.hpp"
 #include "world/world.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 
 struct DumpOptions {
     int width = 800, height = 480;
@@ -57,8 +57,8 @@ inline void polar(std::string& out, double r, double theta) {
     out += ']';
 }
 // "asteroid 12", "bullet 3": a game's body by its number.
-inline void serial_name(std::string& out, BodyKind kind, uint32_t serial) {
-    out += kind_name(kind);
+inline void serial_name(std::string& out, world::BodyKind kind, uint32_t serial) {
+    out += world::kind_name(kind);
     out += ' ';
     out += std::to_string(serial);
 }
@@ -71,24 +71,24 @@ void game_fields(const G& g, std::string& out) {
     out += "\",\"score\":" + std::to_string(g.score) + ",\"lives\":" + std::to_string(g.lives) +
            ",\"level\":" + std::to_string(g.level) + ",\"events\":[";
     for (int i = 0; i < g.event_count(); ++i) {
-        const GameEvent& e = g.events()[i];
+        const world::GameEvent& e = g.events()[i];
         if (i) out += ',';
         switch (e.kind) {
-            case GameEvent::start: out += "{\"start\":true}"; break;
-            case GameEvent::hit:
+            case world::GameEvent::start: out += "{\"start\":true}"; break;
+            case world::GameEvent::hit:
                 out += "{\"hit\":[\"";
-                serial_name(out, BodyKind::bullet, e.bullet);
+                serial_name(out, world::BodyKind::bullet, e.bullet);
                 out += "\",\"";
-                serial_name(out, BodyKind::asteroid, e.asteroid);
+                serial_name(out, world::BodyKind::asteroid, e.asteroid);
                 out += "\"]}";
                 break;
-            case GameEvent::crash:
+            case world::GameEvent::crash:
                 out += "{\"crash\":\"";
-                serial_name(out, BodyKind::asteroid, e.asteroid);
+                serial_name(out, world::BodyKind::asteroid, e.asteroid);
                 out += "\"}";
                 break;
-            case GameEvent::level: out += "{\"level\":" + std::to_string(e.value) + "}"; break;
-            case GameEvent::over: out += "{\"over\":" + std::to_string(e.value) + "}"; break;
+            case world::GameEvent::level: out += "{\"level\":" + std::to_string(e.value) + "}"; break;
+            case world::GameEvent::over: out += "{\"over\":" + std::to_string(e.value) + "}"; break;
         }
     }
     out += ']';
@@ -111,11 +111,11 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
     num(out, K);
     detail::game_fields(world.game(), out);
     out += ",\"bodies\":[";
-    std::vector<Polar<T>> v;
-    std::vector<std::vector<Polar<T>>> edges;
+    std::vector<geo::Polar<T>> v;
+    std::vector<std::vector<geo::Polar<T>>> edges;
     bool first = true;
     for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
-        const Body<T>& b = world.bodies[bi];
+        const world::Body<T>& b = world.bodies[bi];
         if (!b.active) continue;
         v.resize(b.local.size());
         world.vertices(b, v.data());
@@ -125,7 +125,7 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
         for (std::size_t e = 0; e < ne; ++e) {
             edges[e].resize(static_cast<std::size_t>(b.desc->tessellation) + 1);
             W::engine::edge_points(world.K, v[e], v[(e + 1) % n], b.desc->tessellation,
-                                   [&](int k, Polar<T> p) { edges[e][static_cast<std::size_t>(k)] = p; });
+                                   [&](int k, geo::Polar<T> p) { edges[e][static_cast<std::size_t>(k)] = p; });
         }
         if (!first) out += ',';
         first = false;
@@ -139,7 +139,7 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
             }
         }
         out += "\",\"kind\":\"";
-        out += kind_name(b.desc->kind());
+        out += world::kind_name(b.desc->kind());
         out += '"';
         if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
         out += ",\"center\":";
@@ -188,4 +188,4 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
     out += "]}\n";
 }
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

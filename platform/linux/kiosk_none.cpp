@@ -15,12 +15,12 @@ std::unique_ptr<app::Display> open_kiosk(const KioskSpec&, std::string& error) {
     return nullptr;
 }
 
-bool find_board(const std::string&, world::Board&, std::string&, std::string& error) {
+bool find_board(const std::string&, files::Board&, std::string&, std::string& error) {
     error = kNoKiosk;
     return false;
 }
 
-int print_buttons(const world::Board&, const std::string&, long, double) {
+int print_buttons(const files::Board&, const std::string&, long, double) {
     std::fprintf(stderr, "noneuclid: %s.\n", kNoKiosk);
     return 2;
 }

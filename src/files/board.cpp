@@ -1,13 +1,14 @@
-#include "world/board.hpp"
+#include "files/board.hpp"
 
 #include <utility>
 
 #include "geometry/geometry.hpp"
+#include "world/engines.hpp"
 #include "world/quote.hpp"
-#include "world/text_file.hpp"
-#include "world/toml_reader.hpp"
+#include "files/text_file.hpp"
+#include "files/toml_reader.hpp"
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 namespace {
 
 using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
@@ -24,15 +25,15 @@ std::vector<std::string> strings(const toml::table& t, const char* key, const st
     const toml::node* n = t.get(key);
     if (!n) return out;
     auto plain = [&](const toml::node& e, const std::string& v) {
-        if (!is_plain(v)) throw Bad{e.source(), context + "expected " + quote(key) + " without control characters, found " + quote(v)};
+        if (!world::is_plain(v)) throw Bad{e.source(), context + "expected " + world::quote(key) + " without control characters, found " + world::quote(v)};
         return v;
     };
     if (auto s = n->as_string()) return {plain(*n, s->get())};
     const toml::array* a = n->as_array();
-    if (!a) throw Bad{n->source(), context + "expected a string or a list of strings for " + quote(key) + ", found " + type_name(*n)};
+    if (!a) throw Bad{n->source(), context + "expected a string or a list of strings for " + world::quote(key) + ", found " + type_name(*n)};
     for (const toml::node& e : *a) {
         auto s = e.as_string();
-        if (!s) throw Bad{e.source(), context + "expected strings in " + quote(key) + ", found " + type_name(e)};
+        if (!s) throw Bad{e.source(), context + "expected strings in " + world::quote(key) + ", found " + type_name(e)};
         out.push_back(plain(e, s->get()));
     }
     return out;
@@ -52,13 +53,14 @@ void read_board(const toml::table& root, Board& b) {
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
         b.scene = d.plain_string("scene", b.scene);
         b.engine = d.string("engine", b.engine);
-        if (b.engine != "fixed" && b.engine != "double" && b.engine != "float")
-            throw Bad{t->get("engine")->source(), "display: expected engine = \"fixed\", \"double\" or \"float\", found \"" + printable(b.engine) + "\""};
+        world::EngineKind engine;
+        if (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine))
+            throw Bad{t->get("engine")->source(), "display: expected engine = " + world::or_list(world::engine_names(true), true) + ", found \"" + world::printable(b.engine) + "\""};
         b.projection = d.string("projection", b.projection);
         bool known = false;
         for (geo::Projection pr : geo::kProjections) known = known || b.projection == geo::projection_name(pr);
         if (!known)
-            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + printable(b.projection) + "\""};
+            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + world::printable(b.projection) + "\""};
         b.antialias = d.boolean("antialias", b.antialias);
         b.hud = d.boolean("hud", b.hud);
         b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));
@@ -91,21 +93,21 @@ void read_board(const toml::table& root, Board& b) {
             if (!a) throw Bad{t.source(), "button: expected action = \"thrust\" (or left, right, curvature_up, curvature_down, preset, reset, projection, hud, quit), found none"};
             BoardButton bb;
             const std::string action = br.string("action", "");
-            if (!parse_control(action, bb.control))
-                throw Bad{a->source(), "button: unknown action \"" + printable(action) + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
-            const Reader named(t, "button " + quote(action) + ": ");
+            if (!world::parse_control(action, bb.control))
+                throw Bad{a->source(), "button: unknown action \"" + world::printable(action) + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
+            const Reader named(t, "button " + world::quote(action) + ": ");
             bb.gpio = static_cast<int>(named.integer("gpio", -1, 0, 1023, "line offset on the GPIO chip, the BCM number on a Raspberry Pi"));
             bb.pin = static_cast<int>(named.integer("pin", 0, 1, 40, "physical pin on the 40-pin header"));
             bb.key = static_cast<int>(named.integer("key", -1, 1, 767, "evdev key code, e.g. 57 for KEY_SPACE"));
             if (bb.gpio < 0 && bb.key < 0)
-                throw Bad{t.source(), "button " + quote(action) + ": expected a gpio line or a key code (or both), found neither"};
+                throw Bad{t.source(), "button " + world::quote(action) + ": expected a gpio line or a key code (or both), found neither"};
             for (const BoardButton& o : b.buttons) {
                 if (bb.gpio >= 0 && o.gpio == bb.gpio)
-                    throw Bad{t.get("gpio")->source(), "button " + quote(action) + ": gpio " + std::to_string(bb.gpio) +
-                                                           " is already the " + quote(control_name(o.control)) + " button"};
+                    throw Bad{t.get("gpio")->source(), "button " + world::quote(action) + ": gpio " + std::to_string(bb.gpio) +
+                                                           " is already the " + world::quote(world::control_name(o.control)) + " button"};
                 if (bb.key >= 0 && o.key == bb.key)
-                    throw Bad{t.get("key")->source(), "button " + quote(action) + ": key " + std::to_string(bb.key) +
-                                                          " is already the " + quote(control_name(o.control)) + " button"};
+                    throw Bad{t.get("key")->source(), "button " + world::quote(action) + ": key " + std::to_string(bb.key) +
+                                                          " is already the " + world::quote(world::control_name(o.control)) + " button"};
             }
             b.buttons.push_back(bb);
         }
@@ -142,4 +144,4 @@ bool overlay_board_file(const std::string& path, Board& board, BoardError& error
     return true;
 }
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

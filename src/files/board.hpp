@@ -32,12 +32,12 @@
 #include <vector>
 
 #include "world/controls.hpp"
-#include "world/scene_file.hpp"  // SceneError
+#include "files/scene_file.hpp"  // SceneError
 
-namespace noneuclid::world {
+namespace noneuclid::files {
 
 struct BoardButton {
-    Control control = Control::thrust;
+    world::Control control = world::Control::thrust;
     int gpio = -1;  // -1: not on GPIO
     int pin = 0;    // 0: not given
     int key = -1;   // -1: no key code
@@ -91,4 +91,4 @@ bool load_board_file(const std::string& path, Board& out, BoardError& error);
 // the board's own file. On failure `board` is unchanged.
 bool overlay_board_file(const std::string& path, Board& board, BoardError& error);
 
-}  // namespace noneuclid::world
+}  // namespace noneuclid::files

@@ -1,11 +1,10 @@
 // The fixed engine's equidistant view, the kiosk's hot path: a point of the 3-vector model
 // straight to sub-pixels, with no floating point and no division per point (FixedEquidistant),
 // its companion past the sphere's equator (FixedFarSide), and the evaluator edge_curve
-// (render/edge_curve.hpp) takes for this view (FixedEquidistantEval): each slerp point computed
-// from its Q30 weights as 64-bit sums, unsaturated, and given to the kernels; points outside
-// their domains go to the general path (project_vec), out of line.
-// body_screen_points (render/body_points.hpp) takes this path for the fixed engine's
-// equidistant view.
+// (geometry/edge_curve.hpp) takes for this view (FixedEquidistantEval): each slerp point
+// computed from its Q30 weights as 64-bit sums, unsaturated, and given to the kernels; points
+// outside their domains go to the general path (project_vec), out of line. The exact engine's
+// outline (geometry/engine.hpp) takes this path for the fixed scalar's equidistant view.
 #pragma once
 
 #include <algorithm>
@@ -13,13 +12,12 @@
 #include <cstdint>
 
 #include "fixed/math.hpp"
+#include "geometry/edge_curve.hpp"
+#include "geometry/fx/equidistant.hpp"
 #include "geometry/geometry.hpp"
-#include "render/clip_sink.hpp"
-#include "render/edge_curve.hpp"
-#include "render/raster.hpp"
-#include "render/screen_points.hpp"
+#include "geometry/screen_map.hpp"
 
-namespace noneuclid::render::detail {
+namespace noneuclid::geo {
 
 // One point of the equidistant view, from the 3-vector model straight to sub-pixels: a point
 // (w, x, y) is shown at (x, y) E(w) (fx::equidistant_ratio_q30: one table lookup, no reciprocal
@@ -81,7 +79,7 @@ struct FixedEquidistant {
 // The sphere's far side past w = -1/2 (K > 0, distance r > 2 pi / 3 sqrt K), where E(w) grows
 // without bound toward the antipode and Q16.16's w cannot tell points apart: S = |(x, y)| =
 // S_K(r) from (x, y), r = pi / sqrt K - 2 AT_K(S / (1 - w)) (the polar reading past the equator,
-// geo::arc_K, whose 1 - w in [3/2, 2] loses nothing), and the point at r along the unit direction
+// arc_K, whose 1 - w in [3/2, 2] loses nothing), and the point at r along the unit direction
 // (x, y) / S. A square root from its table seed (2^-17: the direction and radius it gives are off
 // by 2^-17 of the point's distance from the centre, 0.002 px on a 1080-px disc), two
 // reciprocals and one ATf lookup: no atan2 and no division instruction. Points within 2^-10 of
@@ -95,7 +93,7 @@ struct FixedFarSide {
     static FixedFarSide make(const FixedEquidistant& fe, fx::fixed K) {
         FixedFarSide f;
         f.cx = fe.cx, f.cy = fe.cy, f.scale = fe.scale, f.K = K.raw();
-        if (K.raw() > 0) f.antipode = (geo::pi_v<fx::fixed> / sqrt(K)).raw();
+        if (K.raw() > 0) f.antipode = (pi_v<fx::fixed> / sqrt(K)).raw();
         return f;
     }
     // 2^62 / d for d > 0 of any size below 2^32, from recip_q62 on d scaled into [2^31, 2^32).
@@ -153,10 +151,10 @@ struct FixedFarSide {
 };
 
 // What FixedEquidistant leaves: project_vec, out of the hot path.
-[[gnu::noinline]] inline Spot general_spot(fx::fixed K, const ScreenMap<fx::fixed>& m, const geo::Vec3<fx::fixed>& v) {
-    const geo::ProjectedPoint<fx::fixed> pp = geo::project_vec(K, v, geo::Projection::azimuthal_equidistant);
+[[gnu::noinline]] inline Spot general_spot(fx::fixed K, const ScreenMap<fx::fixed>& m, const Vec3<fx::fixed>& v) {
+    const ProjectedPoint<fx::fixed> pp = project_vec(K, v, Projection::azimuthal_equidistant);
     if (!pp.visible) return {};
-    return spot_at(m, to_pixels(geo::ScreenPoint<fx::fixed>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
+    return spot_at(m, to_pixels(ScreenPoint<fx::fixed>{m.cx + m.scale * pp.X, m.cy - m.scale * pp.Y}));
 }
 
 // edge_curve's evaluator for the fixed engine's equidistant view. Flat: K = 0 (FixedEquidistant).
@@ -168,18 +166,18 @@ struct FixedEquidistantEval {
     const ScreenMap<fx::fixed>& m;
     int64_t pw = 0, px = 0, py = 0, qw = 0, qx = 0, qy = 0;  // the edge's ends, Q16.16
 
-    void ends(const geo::Vec3<fx::fixed>& p, const geo::Vec3<fx::fixed>& q) {
+    void ends(const Vec3<fx::fixed>& p, const Vec3<fx::fixed>& q) {
         pw = p.w.raw(), px = p.x.raw(), py = p.y.raw(), qw = q.w.raw(), qx = q.x.raw(), qy = q.y.raw();
     }
     FixedFarSide far = FixedFarSide::make(fe, K);
 
-    Spot vertex(const geo::Vec3<fx::fixed>& v) const {
+    Spot vertex(const Vec3<fx::fixed>& v) const {
         SubPoint s;
         if (fe.point<Flat>(v.w.raw(), v.x.raw(), v.y.raw(), s)) return spot_at(m, s);
         return other(v.w.raw(), v.x.raw(), v.y.raw(), v, v.x.raw(), v.y.raw());
     }
     // Past FixedEquidistant's domain: the far side, else project_vec.
-    [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const geo::Vec3<fx::fixed>& v, int64_t dx,
+    [[gnu::noinline]] Spot other(int64_t w, int64_t x, int64_t y, const Vec3<fx::fixed>& v, int64_t dx,
                                  int64_t dy) const {
         SubPoint s;
         if (far.point(w, x, y, s, dx, dy)) return spot_at(m, s);
@@ -201,4 +199,14 @@ struct FixedEquidistantEval {
     }
 };
 
-}  // namespace noneuclid::render::detail
+// The fixed scalar's view evaluator (geometry/edge_curve.hpp's with_view_eval): this kernel for
+// the equidistant view within its scale, the general one otherwise.
+template <class F>
+void with_view_eval(fx::fixed K, const ScreenMap<fx::fixed>& m, Projection p, F&& f) {
+    FixedEquidistant fe;
+    if (p != Projection::azimuthal_equidistant || !FixedEquidistant::make(m, fe)) return f(VecEval<fx::fixed>{K, p, m});
+    if (K.raw() == 0) return f(FixedEquidistantEval<true>{fe, K, m});
+    f(FixedEquidistantEval<false>{fe, K, m});
+}
+
+}  // namespace noneuclid::geo
