@@ -140,7 +140,7 @@ private:
             fr.k = T(std::min(t.width / across, 16384.0));
             fr.s0_8 = int64_t{t.width} * kSub / 2, fr.t0_8 = int64_t{t.height} * kSub / 2;
         }
-        if constexpr (std::is_same_v<T, fx::fixed>) f.use_fast = fill::FastMap::make(fr, f.fast);
+        f.pixels.make(fr);
         f.job.body = &f;
         f.job.span = &fill::span<T>;
         f.job.test = &fill::test<T>;

@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <type_traits>
 #include <vector>
 
 #include "fixed/math.hpp"
@@ -115,14 +114,21 @@ struct Frame {
     T k{};                       // texels per world unit
 };
 
+// Whether a pixel's place in the projection plane is one the scalar can take further: always
+// in floating point; in fixed point within +-128 (farther, a square would saturate).
+template <class T>
+bool within_scalar(T, T) {
+    return true;
+}
+inline bool within_scalar(fixed X, fixed Y) {
+    const fixed big(128);
+    return !(X > big || X < -big || Y > big || Y < -big);
+}
 // A pixel's local 3-vector, any engine and projection: false where the projection shows no point.
 template <class T>
 bool local_at(const Frame<T>& f, int x, int y, geo::Vec3<T>& L) {
     const T X = (T(x) + T(0.5) - f.m.cx) / f.m.scale, Y = (f.m.cy - T(y) - T(0.5)) / f.m.scale;
-    if constexpr (std::is_same_v<T, fixed>) {  // (farther, a square would saturate)
-        const T big(128);
-        if (X > big || X < -big || Y > big || Y < -big) return false;
-    }
+    if (!within_scalar(X, Y)) return false;
     const geo::Unprojected<T> u = geo::unproject(f.K, X, Y, f.proj);
     if (!u.valid) return false;
     L = f.to_local(u.p);
@@ -210,9 +216,33 @@ struct FastMap {
     }
 };
 
+// How a row's pixels reach the body's frame: row(f, y, g) calls g(local) once, with local(x, L)
+// the pixel's local 3-vector (false where none), chosen once a row. In general local_at; the
+// fixed engine's equidistant view, FastMap (set each frame by make).
+template <class T>
+struct PixelMap {
+    void make(const Frame<T>&) {}
+    template <class G>
+    decltype(auto) row(const Frame<T>& f, int y, G&& g) const {
+        return g([&f, y](int x, geo::Vec3<T>& L) { return local_at(f, x, y, L); });
+    }
+};
+template <>
+struct PixelMap<fixed> {
+    FastMap fast;
+    bool use_fast = false;
+    void make(const Frame<fixed>& f) { use_fast = FastMap::make(f, fast); }
+    template <class G>
+    decltype(auto) row(const Frame<fixed>& f, int y, G&& g) const {
+        if (!use_fast) return g([&f, y](int x, geo::Vec3<fixed>& L) { return local_at(f, x, y, L); });
+        FastMap map = fast;
+        map.row(y);
+        return g([&map](int x, geo::Vec3<fixed>& L) { return map.local(x, L); });
+    }
+};
+
 // One body's fill: its outline in its frame, the frame, how it is painted, and its FillJob with
 // the polyline (render/fill.hpp sets them).
-struct Empty {};
 template <class T>
 struct Body {
     std::size_t index = 0;                   // in World::bodies
@@ -221,8 +251,7 @@ struct Body {
     std::size_t per_edge = 2;                // the most segments an edge's polyline may have
     LocalOutline<T> outline;
     Frame<T> frame;
-    std::conditional_t<std::is_same_v<T, fixed>, FastMap, Empty> fast;
-    bool use_fast = false;
+    PixelMap<T> pixels;
     TexelMap texels;  // (texels.tex null: one colour)
     FillJob job;
 };
@@ -230,21 +259,12 @@ struct Body {
 // Pixels [x0, x1) of row y: the local 3-vectors of each in turn.
 template <class T, class F>
 [[gnu::always_inline]] inline void for_pixels(const Body<T>& b, int y, int x0, int x1, F&& f) {
-    if constexpr (std::is_same_v<T, fixed>) {
-        if (b.use_fast) {
-            FastMap map = b.fast;
-            map.row(y);
-            for (int x = x0; x < x1; ++x) {
-                geo::Vec3<fixed> L;
-                f(x, map.local(x, L), L);
-            }
-            return;
+    b.pixels.row(b.frame, y, [&](auto&& local) {
+        for (int x = x0; x < x1; ++x) {
+            geo::Vec3<T> L;
+            f(x, local(x, L), L);
         }
-    }
-    for (int x = x0; x < x1; ++x) {
-        geo::Vec3<T> L;
-        f(x, local_at(b.frame, x, y, L), L);
-    }
+    });
 }
 
 // n pixels from x of a textured run, the i-th at texture coordinates (s + i ds, t + i dt) in
@@ -291,23 +311,13 @@ void span(const void* body, const Canvas& c, int y, int x0, int x1) {
                 });
         }
     };
-    if constexpr (std::is_same_v<T, fixed>) {
-        if (b.use_fast) {
-            FastMap map = b.fast;
-            map.row(y);
-            return paint([&](int x, Texcoord& t) {
-                geo::Vec3<fixed> L;
-                if (!map.local(x, L)) return false;
-                texcoord(b.frame, L, t.s, t.t);
-                return true;
-            });
-        }
-    }
-    paint([&](int x, Texcoord& t) {
-        geo::Vec3<T> L;
-        if (!local_at(b.frame, x, y, L)) return false;
-        texcoord(b.frame, L, t.s, t.t);
-        return true;
+    b.pixels.row(b.frame, y, [&](auto&& local) {
+        paint([&](int x, Texcoord& t) {
+            geo::Vec3<T> L;
+            if (!local(x, L)) return false;
+            texcoord(b.frame, L, t.s, t.t);
+            return true;
+        });
     });
 }
 // FillJob::test: each pixel tested, then painted (anti-aliased: with its coverage).
