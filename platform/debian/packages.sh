@@ -34,8 +34,9 @@ _np_group() {
         cross-arm64) echo @core crossbuild-essential-arm64 qemu-user libgtest-dev libgpiod-dev:arm64 ;;
         cross-armhf) echo @core crossbuild-essential-armhf qemu-user libgtest-dev libgpiod-dev:armhf ;;
         cross) echo @cross-arm64 @cross-armhf ;;
-        # The web page (the web preset): emscripten brings clang, lld, binaryen, Node.js and Python.
-        web) echo @core emscripten ;;
+        # The web page (the web preset): no host compiler, emscripten brings clang, lld,
+        # binaryen, Node.js and Python.
+        web) echo cmake make libglm-dev libtomlplusplus-dev emscripten ;;
         # The page's test (tests/web/run): it runs in headless Chromium.
         web-test) echo @web chromium ;;
         # The system test (tests/system/run): qemu, the initramfs's busybox, cpio and kmod
