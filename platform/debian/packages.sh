@@ -12,8 +12,8 @@
 #
 # Each group is whole: it names everything its job needs, partly through the groups it builds on
 # (an @name below), so a script names only the groups of the jobs it does. The list printed is
-# their union, each package once, in the order of the table. A package:ARCH is multiarch: the
-# group needs ARCH enabled as a foreign architecture (--archs, noneuclid_install).
+# their union, each package once, in the order the groups are named. A package:ARCH is multiarch:
+# the group needs ARCH enabled as a foreign architecture (--archs, noneuclid_install).
 
 # The table: the words of group $1 (packages, and @group for another group's), or 1 if unknown.
 _np_group() {
