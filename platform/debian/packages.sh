@@ -123,10 +123,10 @@ noneuclid_install() {
     # shellcheck disable=SC2086  # the list is one package a word
     _np_foreign=$(_np_archs $_np_list)
     if [ -n "$_np_foreign" ]; then
-        # shellcheck disable=SC2086
+        # shellcheck disable=SC2086  # one architecture a word
         noneuclid_foreign_archs $_np_foreign || return
     fi
-    # shellcheck disable=SC2086
+    # shellcheck disable=SC2086  # one package a word
     noneuclid_deps $_np_list
 }
 

@@ -11,8 +11,7 @@
 # interface), builds PROBE in BUILD_DIR (default build/<TARGET>, configured with the TARGET
 # preset if it is not yet) and sets probe to it; or says why not and exits 2.
 
-# arch, counter and probe are this file's results: the scripts that source it use them.
-# shellcheck disable=SC2034
+# shellcheck disable=SC2034  # arch, counter and probe are results, for the scripts sourcing this
 arm_setup() {
     local tool=$1 target=$2 target_probe=$3 group build
     case $target in
