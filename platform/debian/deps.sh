@@ -83,7 +83,7 @@ noneuclid_deps() {
     # lists, and once more.
     echo "deps.sh: apt-get install failed (above); updating the package lists and trying once more" >&2
     noneuclid_apt_update
-    # shellcheck disable=SC2086
+    # shellcheck disable=SC2086  # as above
     _nd_apt install -y --no-install-recommends $_nd_missing && return 0
 
     _nd_missing=$(_nd_missing_of "$@")

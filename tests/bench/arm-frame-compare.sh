@@ -18,12 +18,13 @@ target=${1:-aarch64}
 scene=${2:-kiosk}
 size=${3:-800x480}
 format=${4:-rgb565}
-tool=arm-frame-compare.sh
 if [ -z "${BEFORE:-}" ] || [ ! -x "$BEFORE" ]; then
-    echo "$tool: set BEFORE to another build's frame_probe (an executable file), e.g. BEFORE=/tmp/before/build/aarch64/frame_probe." >&2
+    echo "arm-frame-compare.sh: set BEFORE to another build's frame_probe (an executable file), e.g. BEFORE=/tmp/before/build/aarch64/frame_probe." >&2
     exit 2
 fi
-. tests/bench/frame-probe-setup.sh
+# shellcheck source=tests/bench/arm-setup.sh
+. tests/bench/arm-setup.sh
+arm_setup arm-frame-compare.sh "$target" frame_probe
 n=${FRAMES:-5}
 
 count() {  # count PROBE ENGINE K FRAMES -> instructions

@@ -21,8 +21,9 @@ target=${1:-aarch64}
 scene=${2:-kiosk}
 size=${3:-800x480}
 format=${4:-rgb565}
-tool=arm-frame-insncount.sh
-. tests/bench/frame-probe-setup.sh
+# shellcheck source=tests/bench/arm-setup.sh
+. tests/bench/arm-setup.sh
+arm_setup arm-frame-insncount.sh "$target" frame_probe
 n=${FRAMES:-10}
 
 count() {  # count STAGE ENGINE FRAMES -> instructions

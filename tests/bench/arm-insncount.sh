@@ -6,28 +6,17 @@
 #   tests/bench/arm-insncount.sh armhf      # 32-bit ARMv7 build
 #
 # Needs crossbuild-essential-arm64 / -armhf, qemu-user and a C compiler for the counter's
-# plugin (installed here through platform/debian/deps.sh if missing). ARM_INSNCOUNT=PATH
-# uses another counter with the same interface.
+# plugin (installed here through platform/debian/deps.sh if missing: tests/bench/arm-setup.sh).
+# ARM_INSNCOUNT=PATH uses another counter with the same interface; BUILD_DIR=build/p8-aarch64
+# an existing cross build directory (default build/<target>).
 # Per call = (count with N calls - count with 0 calls) / N, minus the loop's own cost
 # (insn_probe nop: load an input, accumulate, count), which is printed too.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 target=${1:-aarch64}
-case $target in
-    aarch64) arch=aarch64; pkg=crossbuild-essential-arm64 ;;
-    armhf) arch=arm; pkg=crossbuild-essential-armhf ;;
-    *) echo "arm-insncount.sh: target must be aarch64 or armhf, not '$target'." >&2; exit 2 ;;
-esac
-counter=${ARM_INSNCOUNT:-tests/bench/insncount/arm-insncount}
-if [ ! -x "$counter" ]; then
-    echo "arm-insncount.sh: the counter $counter is missing or not executable (ARM_INSNCOUNT names another)." >&2
-    exit 2
-fi
-. platform/debian/deps.sh
-noneuclid_deps g++ cmake make "$pkg" qemu-user gcc libgtest-dev libglm-dev libtomlplusplus-dev
-cmake --preset "$target" >/dev/null
-cmake --build --preset "$target" --target insn_probe -j "$(nproc)" >/dev/null
-probe=build/$target/insn_probe
+# shellcheck source=tests/bench/arm-setup.sh
+. tests/bench/arm-setup.sh
+arm_setup arm-insncount.sh "$target" insn_probe
 n=20000
 
 count() {  # count FUNCTION IMPL CALLS -> instructions

@@ -17,8 +17,9 @@ target=${1:-aarch64}
 shift || true
 curvatures=("$@")
 [ ${#curvatures[@]} -gt 0 ] || curvatures=(-1 -0.6 0 0.5)
-tool=arm-point-insncount.sh
-. tests/bench/frame-probe-setup.sh
+# shellcheck source=tests/bench/arm-setup.sh
+. tests/bench/arm-setup.sh
+arm_setup arm-point-insncount.sh "$target" frame_probe
 frames=4
 
 count() {  # count ENGINE FRAMES K LEVEL VERTICES -> instructions

@@ -26,7 +26,8 @@ expect() {
 # intact NAME FILE: FILE is still the good copy, and no temporary file is left beside it.
 intact() {
     if ! cmp -s "$2" "$2.good"; then fail "$1: $2 was changed"; return; fi
-    if ls -a | grep -q "^\.$2\."; then fail "$1: a temporary file is left: $(ls -a | grep "^\.$2\.")"; return; fi
+    local left
+    if left=$(compgen -G ".$2.*"); then fail "$1: a temporary file is left: $left"; return; fi
     pass "$1: $2 untouched, nothing left behind"
 }
 # stopped NAME PID SIGNAL STDERR_PATTERN: sends SIGNAL to the background command PID (its stderr
@@ -60,7 +61,7 @@ intact "SIGTERM while the world runs" pic.png
 # A picture big enough to take seconds to write; the signal comes while it is written.
 "$noneuclid" render --scene fig1 --frames 0 --size 8192x8192 --format rgb565 --out pic.png 2> err.txt &
 pid=$!
-for _ in $(seq 400); do ls -a | grep -q '^\.pic\.png\.' && break; sleep 0.05; done
+for _ in $(seq 400); do compgen -G '.pic.png.*' >/dev/null && break; sleep 0.05; done
 stopped "SIGINT while the PNG is written" "$pid" INT "stopped by signal 2 while writing pic.png; it is left as it was"
 intact "SIGINT while the PNG is written" pic.png
 
@@ -75,7 +76,7 @@ expect "render --gif over the file-size limit" 1 "cannot write anim.gif: File to
 intact "render --gif over the file-size limit" anim.gif
 expect "render --gif into a missing directory" 1 "cannot write missing/anim.gif: No such file or directory" \
     "$noneuclid" render --scene fig1 --frames 4 --gif missing/anim.gif
-[ ! -e missing ] && pass "render --gif into a missing directory: nothing made" || fail "render --gif made missing/"
+if [ ! -e missing ]; then pass "render --gif into a missing directory: nothing made"; else fail "render --gif made missing/"; fi
 
 mkdir -p demo && "$noneuclid" demo --out-dir demo > /dev/null 2>&1
 cp demo/kiosk.png kiosk.png.good

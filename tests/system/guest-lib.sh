@@ -1,3 +1,5 @@
+# shellcheck shell=dash
+# (busybox sh, an ash, runs it; shellcheck 0.9 checks ash as dash.)
 # Helpers for guest scripts of tests/system/run (busybox sh inside the VM). /init sources this
 # file before running the guest script, so its functions are already defined there.
 #
@@ -58,6 +60,7 @@ sim_chip() {
     echo "$2" > "$_cfg/bank0/num_lines" || return 1
     echo "$1" > "$_cfg/bank0/label" || return 1
     echo 1 > "$_cfg/live" || return 1
+    # shellcheck disable=SC2034  # for the guest scripts, which run after this file is sourced
     SIM_DEV=/dev/$(cat "$_cfg/bank0/chip_name")
     SIM_DIR=/sys/devices/platform/$(cat "$_cfg/dev_name")/$(cat "$_cfg/bank0/chip_name")
     _n=0

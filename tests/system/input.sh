@@ -1,3 +1,5 @@
+# shellcheck shell=dash
+# (busybox sh, an ash, runs it; shellcheck 0.9 checks ash as dash.)
 # Guest script of tests/system/input-test (busybox sh in the VM, helpers from guest-lib.sh):
 # the kiosk's input backends against a real kernel, through `noneuclid buttons`.
 # /t/params.sh sets BINARIES (static noneuclid builds in /t, e.g. "noneuclid-gpiod1
@@ -20,6 +22,8 @@
 #   no keys    a board whose codes no device has: the sentence names the codes
 # And as a user outside the gpio and input groups: the permission sentences.
 
+# Written by the host for this run (tests/system/run, input-test).
+# shellcheck source=/dev/null
 . /t/params.sh
 BOARD=/t/board.toml
 NBUTTONS=$(grep -c '^gpio = ' "$BOARD")

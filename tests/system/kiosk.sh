@@ -1,3 +1,5 @@
+# shellcheck shell=dash
+# (busybox sh, an ash, runs it; shellcheck 0.9 checks ash as dash.)
 # Guest script of the system test (tests/system/run), busy-box sh in the VM, helpers from
 # guest-lib.sh. /t/params.sh (written by the host) sets BINARIES: the static noneuclid builds
 # in /t to try, e.g. "noneuclid-gpiod1 noneuclid-gpiod2" (libgpiod v1 and v2 backends).
@@ -23,6 +25,8 @@
 # repaint the console over the picture before it is read back; the VT's KD mode is still real
 # and is checked while noneuclid runs and after it exits.
 
+# Written by the host for this run (tests/system/run, input-test).
+# shellcheck source=/dev/null
 . /t/params.sh
 TTY=/dev/tty1
 THRUST=0 CURVATURE_DOWN=4 QUIT=7 FIRE=8
@@ -56,6 +60,7 @@ quit_run() {
 last_line() { tail -n 1 "$1"; }
 
 # is_sentence LINE PART...: "noneuclid: ..." ending in a full stop, containing every PART.
+# shellcheck disable=SC2317  # called only through check, which shellcheck does not follow
 is_sentence() {
     _l=$1
     shift

@@ -1,3 +1,5 @@
+# shellcheck shell=dash
+# (busybox sh, an ash, runs it; shellcheck 0.9 checks ash as dash.)
 # Guest script of `tests/system/run smoke`: the harness itself, with busybox alone.
 # The bochs framebuffer is XRGB8888 800x480, vfb is RGB565 800x480, a gpio-sim bank
 # "noneuclid-sim" of 9 lines goes live and its pulls move the line values.
