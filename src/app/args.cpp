@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "world/quote.hpp"
+
 namespace noneuclid::app {
 
 void usage_error(const std::string& message) { throw UsageError{message}; }
@@ -55,9 +57,10 @@ void parse_size(const std::string& opt, const std::string& text, int& width, int
 }
 
 geo::Projection parse_projection(const std::string& opt, const std::string& text) {
-    for (geo::Projection p : geo::kProjections)
-        if (text == geo::projection_name(p)) return p;
-    usage_error(opt + " must be equidistant, stereographic, gnomonic, orthographic or lambert, not '" + text + "'.");
+    geo::Projection p{};
+    if (!geo::parse_projection_name(text, p))
+        usage_error(opt + " must be " + world::or_list(geo::projection_names()) + ", not '" + text + "'.");
+    return p;
 }
 
 render::PixelFormat parse_format(const std::string& opt, const std::string& text) {

@@ -57,10 +57,9 @@ void read_board(const toml::table& root, Board& b) {
         if (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine))
             throw Bad{t->get("engine")->source(), "display: expected engine = " + world::or_list(world::engine_names(true), true) + ", found \"" + world::printable(b.engine) + "\""};
         b.projection = d.string("projection", b.projection);
-        bool known = false;
-        for (geo::Projection pr : geo::kProjections) known = known || b.projection == geo::projection_name(pr);
-        if (!known)
-            throw Bad{t->get("projection")->source(), "display: expected projection = \"equidistant\", \"stereographic\", \"gnomonic\", \"orthographic\" or \"lambert\", found \"" + world::printable(b.projection) + "\""};
+        geo::Projection projection{};
+        if (!geo::parse_projection_name(b.projection, projection))
+            throw Bad{t->get("projection")->source(), "display: expected projection = " + world::or_list(geo::projection_names(), true) + ", found \"" + world::printable(b.projection) + "\""};
         b.antialias = d.boolean("antialias", b.antialias);
         b.hud = d.boolean("hud", b.hud);
         b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));

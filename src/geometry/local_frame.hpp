@@ -1,7 +1,7 @@
 // What filling and texturing a body needs of the geometry (render/fill.hpp): the way back from
 // the screen to the body's own frame, and whether a point lies inside a geodesic polygon.
-//  - unproject: the inverse of each projection (geometry/projection.hpp), from a point (X, Y) of
-//    the projection plane to its 3-vector, where the projection shows one;
+//  - unproject: the inverse of each projection (its formulas are in geometry/projection.hpp),
+//    from a point (X, Y) of the projection plane to its 3-vector, where the projection shows one;
 //  - body_motion_inverse: the inverse of geo::body_motion, which takes a point's 3-vector to the
 //    body's local frame (its centre at O, its facing along +x);
 //  - point_in_polygon: the even-odd inside test of a geodesic polygon of any shape (star-shaped
@@ -19,54 +19,13 @@
 
 namespace noneuclid::geo {
 
-// A point of the projection plane taken back to the 3-vector model: `valid` is false where the
-// projection shows no point (beyond the equidistant view's rim at r = pi / sqrt K, outside the
-// Poincare and Klein disks, beyond the orthographic and Lambert views' rims).
-template <class T>
-struct Unprojected {
-    bool valid = false;
-    Vec3<T> p;
-};
 // The 3-vector whose projection is (X, Y), in world units of the projection plane (the screen
-// point minus the centre, over the scale, y up), for every K:
-//   equidistant    rho = r:          p = (Cf(u), Sf(u) X, Sf(u) Y) with u = K rho^2
-//   stereographic  rho = 2 T_K(r/2): p = (1 - q, X, Y) / (1 + q) with q = K rho^2 / 4
-//   gnomonic       rho = T_K(r):     p = (1, X, Y) / sqrt(1 + K rho^2)
-//   orthographic   rho = S_K(r):     p = (sqrt(1 - K rho^2), X, Y)
-//   Lambert        rho = 2 S_K(r/2): p = (1 - K rho^2 / 2, sqrt(1 - K rho^2 / 4) (X, Y))
-// (each checked with <p, p> = 1 and against the forward projection in the tests).
+// point minus the centre, over the scale, y up), for every K: each projection's own inverse
+// (geometry/projection.hpp, checked with <p, p> = 1 and against the forward projection in the
+// tests); `valid` is false where the projection shows no point.
 template <class T>
 Unprojected<T> unproject(T K, T X, T Y, Projection proj) {
-    using std::sqrt;
-    const T rho2 = X * X + Y * Y, u = K * rho2;
-    switch (proj) {
-        case Projection::azimuthal_equidistant: {
-            if (u >= pi_v<T> * pi_v<T>) return {};  // at or past the antipode's circle
-            const T s = Sf(u);
-            return {true, {Cf(u), s * X, s * Y}};
-        }
-        case Projection::stereographic: {
-            const T q = quarter(u), d = T(1) + q;
-            if (d <= num<T>(1e-6)) return {};
-            return {true, {quotient(T(1) - q, d), quotient(X, d), quotient(Y, d)}};
-        }
-        case Projection::gnomonic: {
-            const T d = T(1) + u;
-            if (d <= num<T>(1e-6)) return {};
-            const T w = quotient(T(1), sqrt(d));
-            return {true, {w, X * w, Y * w}};
-        }
-        case Projection::orthographic: {
-            if (u > T(1)) return {};
-            return {true, {sqrt(T(1) - u), X, Y}};
-        }
-        case Projection::lambert_equal_area: {
-            if (u > T(4)) return {};
-            const T f = sqrt(T(1) - quarter(u));
-            return {true, {T(1) - u / T(2), f * X, f * Y}};
-        }
-    }
-    return {};
+    return with_projection(proj, [&](auto P) { return decltype(P)::unproject(K, X, Y); });
 }
 
 // The inverse of body_motion(K, centre, facing): a point's 3-vector p lands at Mi p in the body's

@@ -4,85 +4,290 @@
 // point.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <string>
+#include <string_view>
+#include <tuple>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 #include "geometry/fx/equidistant.hpp"
 #include "geometry/model.hpp"
 
 namespace noneuclid::geo {
 
-// Screen radius rho = f_K(r) of a point at distance r from O, continuous in K; at K = 0 every
-// projection is rho = r. Multiply by (disk radius in px) / (limit radius R) for pixels.
-enum class Projection {
-    azimuthal_equidistant,  // the paper's: rho = r
-    stereographic,          // rho = 2 T_K(r/2); the Poincare disk when K < 0
-    gnomonic,               // rho = T_K(r); Beltrami-Klein when K < 0 (geodesics are straight)
-    orthographic,           // rho = S_K(r)
-    lambert_equal_area,     // rho = 2 S_K(r/2)
+// A projection is a type of static formulas, for every scalar T and curvature K, continuous in
+// K (at K = 0 every projection is rho = r):
+//   name, help                the command line's word and its line in --help
+//   project(K, r)             the screen radius rho = f_K(r) of a point at distance r from O
+//                             (Projected: visible false where the view cannot show it)
+//   cut(K, c)                 on the sphere (K > 0): whether the view is cut short of the limit
+//                             circle, at distance c (see shown_radius)
+//   antipode(K, rho)          whether the view draws the sphere's antipode as a whole circle, of
+//                             projected radius rho
+//   straight(K)               whether every geodesic the view draws is a straight line
+//   factor(K, v, f)           the view of a 3-vector v = (w, x, y) as (x, y) f, where such a factor
+//                             exists and v is in its domain (w >= 0, |x|, |y| <= 100); false
+//                             sends v through its polar coordinates instead
+//   unproject(K, X, Y)        the 3-vector whose projection is (X, Y) (local_frame.hpp uses it)
+// kProjectionTable lists them; everything that names, parses, lists or dispatches projections
+// reads it, so a new projection is its formulas and one row.
+template <class T>
+struct Projected {
+    T rho{};
+    bool visible = true;
 };
-inline constexpr Projection kProjections[] = {
-    Projection::azimuthal_equidistant, Projection::stereographic, Projection::gnomonic,
-    Projection::orthographic, Projection::lambert_equal_area};
-inline const char* projection_name(Projection p) {
-    switch (p) {
-        case Projection::azimuthal_equidistant: return "equidistant";
-        case Projection::stereographic: return "stereographic";
-        case Projection::gnomonic: return "gnomonic";
-        case Projection::orthographic: return "orthographic";
-        case Projection::lambert_equal_area: return "lambert";
+// A point of the projection plane taken back to the 3-vector model: `valid` is false where the
+// projection shows no point (beyond the equidistant view's rim at r = pi / sqrt K, outside the
+// Poincare and Klein disks, beyond the orthographic and Lambert views' rims).
+template <class T>
+struct Unprojected {
+    bool valid = false;
+    Vec3<T> p;
+};
+
+// The paper's: rho = r.
+struct Equidistant {
+    static constexpr const char* name = "equidistant";
+    static constexpr const char* help = "azimuthal equidistant, the paper's view (rho = r)";
+    template <class T>
+    static Projected<T> project(T, T r) {
+        return {r, true};
     }
-    return "?";
+    template <class T>
+    static bool cut(T, T&) {
+        return false;
+    }
+    template <class T>
+    static bool antipode(T K, T& rho) {  // at pi / sqrt K
+        using std::sqrt;
+        return rho = pi_v<T> / sqrt(K), true;
+    }
+    template <class T>
+    static bool straight(T) {
+        return false;
+    }
+    template <class T>
+    static bool factor(T K, const Vec3<T>& v, T& f);  // below: E(w) (equidistant_ratio)
+    template <class T>
+    static Unprojected<T> unproject(T K, T X, T Y) {  // p = (Cf(u), Sf(u) X, Sf(u) Y), u = K rho^2
+        const T u = K * (X * X + Y * Y);
+        if (u >= pi_v<T> * pi_v<T>) return {};  // at or past the antipode's circle
+        const T s = Sf(u);
+        return {true, {Cf(u), s * X, s * Y}};
+    }
+};
+// rho = 2 T_K(r/2); the Poincare disk when K < 0.
+struct Stereographic {
+    static constexpr const char* name = "stereographic";
+    static constexpr const char* help = "stereographic, the Poincare disc at K < 0 (rho = 2 T_K(r/2))";
+    template <class T>
+    static Projected<T> project(T K, T r) {
+        const T h = r / T(2), c = C_K(K, h);
+        if (c <= num<T>(1e-6)) return {T(0), false};  // at (or a rounding short of) the antipode
+        return {T(2) * S_K(K, h) / c, true};
+    }
+    template <class T>
+    static bool cut(T K, T& c) {  // at 120 degrees, where a radial step is stretched four times
+        using std::sqrt;
+        return c = T(2) * pi_v<T> / T(3) / sqrt(K), true;
+    }
+    template <class T>
+    static bool antipode(T, T&) {
+        return false;
+    }
+    template <class T>
+    static bool straight(T) {
+        return false;
+    }
+    template <class T>
+    static bool factor(T, const Vec3<T>& v, T& f) {
+        return f = quotient(T(2), T(1) + v.w), true;
+    }
+    template <class T>
+    static Unprojected<T> unproject(T K, T X, T Y) {  // p = (1 - q, X, Y) / (1 + q), q = K rho^2 / 4
+        const T q = quarter(K * (X * X + Y * Y)), d = T(1) + q;
+        if (d <= num<T>(1e-6)) return {};
+        return {true, {quotient(T(1) - q, d), quotient(X, d), quotient(Y, d)}};
+    }
+};
+// rho = T_K(r); Beltrami-Klein when K < 0 (geodesics are straight).
+struct Gnomonic {
+    static constexpr const char* name = "gnomonic";
+    static constexpr const char* help = "gnomonic, Beltrami-Klein at K < 0: geodesics are straight (rho = T_K(r))";
+    template <class T>
+    static Projected<T> project(T K, T r) {
+        const T c = C_K(K, r);
+        if (c <= num<T>(1e-6)) return {T(0), false};  // the far hemisphere
+        return {S_K(K, r) / c, true};
+    }
+    template <class T>
+    static bool cut(T K, T& c) {  // at 60 degrees, where a radial step is stretched four times
+        using std::sqrt;
+        return c = pi_v<T> / T(3) / sqrt(K), true;
+    }
+    template <class T>
+    static bool antipode(T, T&) {
+        return false;
+    }
+    template <class T>
+    static bool straight(T) {
+        return true;
+    }
+    template <class T>
+    static bool factor(T, const Vec3<T>&, T&) {
+        return false;
+    }
+    template <class T>
+    static Unprojected<T> unproject(T K, T X, T Y) {  // p = (1, X, Y) / sqrt(1 + K rho^2)
+        using std::sqrt;
+        const T d = T(1) + K * (X * X + Y * Y);
+        if (d <= num<T>(1e-6)) return {};
+        const T w = quotient(T(1), sqrt(d));
+        return {true, {w, X * w, Y * w}};
+    }
+};
+// rho = S_K(r).
+struct Orthographic {
+    static constexpr const char* name = "orthographic";
+    static constexpr const char* help = "orthographic (rho = S_K(r))";
+    template <class T>
+    static Projected<T> project(T K, T r) {
+        return {S_K(K, r), !(C_K(K, r) < T(0))};
+    }
+    template <class T>
+    static bool cut(T K, T& c) {  // at the equator, where it folds
+        using std::sqrt;
+        return c = pi_v<T> / T(2) / sqrt(K), true;
+    }
+    template <class T>
+    static bool antipode(T, T&) {
+        return false;
+    }
+    template <class T>
+    static bool straight(T) {
+        return false;
+    }
+    template <class T>
+    static bool factor(T, const Vec3<T>&, T&) {
+        return false;
+    }
+    template <class T>
+    static Unprojected<T> unproject(T K, T X, T Y) {  // p = (sqrt(1 - K rho^2), X, Y)
+        using std::sqrt;
+        const T u = K * (X * X + Y * Y);
+        if (u > T(1)) return {};
+        return {true, {sqrt(T(1) - u), X, Y}};
+    }
+};
+// rho = 2 S_K(r/2).
+struct Lambert {
+    static constexpr const char* name = "lambert";
+    static constexpr const char* help = "Lambert azimuthal equal-area (rho = 2 S_K(r/2))";
+    template <class T>
+    static Projected<T> project(T K, T r) {
+        return {T(2) * S_K(K, r / T(2)), true};
+    }
+    template <class T>
+    static bool cut(T, T&) {
+        return false;
+    }
+    template <class T>
+    static bool antipode(T K, T& rho) {  // at 2 / sqrt K
+        using std::sqrt;
+        return rho = T(2) / sqrt(K), true;
+    }
+    template <class T>
+    static bool straight(T) {
+        return false;
+    }
+    template <class T>
+    static bool factor(T, const Vec3<T>& v, T& f) {
+        using std::sqrt;
+        return f = sqrt(quotient(T(2), T(1) + v.w)), true;
+    }
+    template <class T>
+    static Unprojected<T> unproject(T K, T X, T Y) {  // p = (1 - K rho^2 / 2, sqrt(1 - K rho^2 / 4) (X, Y))
+        using std::sqrt;
+        const T u = K * (X * X + Y * Y);
+        if (u > T(4)) return {};
+        const T f = sqrt(T(1) - quarter(u));
+        return {true, {T(1) - u / T(2), f * X, f * Y}};
+    }
+};
+
+// The projections, in the order P cycles them and --help lists them.
+using ProjectionTable = std::tuple<Equidistant, Stereographic, Gnomonic, Orthographic, Lambert>;
+inline constexpr std::size_t kProjectionCount = std::tuple_size_v<ProjectionTable>;
+
+// A projection: its row in ProjectionTable. The rows the code names have names here (a new row
+// needs none: Projection{5} is the sixth).
+enum class Projection : uint8_t {
+    azimuthal_equidistant,
+    stereographic,
+    gnomonic,
+    orthographic,
+    lambert_equal_area,
+};
+
+// f(P{}) for P the row of projection p (a row past the table is the first).
+template <std::size_t I = 0, class F>
+constexpr decltype(auto) with_projection(Projection p, F&& f) {
+    using P = std::tuple_element_t<I, ProjectionTable>;
+    if constexpr (I + 1 == kProjectionCount) {
+        return f(P{});
+    } else {
+        if (static_cast<std::size_t>(p) == I) return f(P{});
+        return with_projection<I + 1>(p, f);
+    }
+}
+// Every projection, in the table's order.
+inline constexpr auto kProjections = []<std::size_t... I>(std::index_sequence<I...>) {
+    return std::array<Projection, kProjectionCount>{static_cast<Projection>(I)...};
+}(std::make_index_sequence<kProjectionCount>{});
+
+constexpr const char* projection_name(Projection p) {
+    return with_projection(p, [](auto P) { return decltype(P)::name; });
+}
+constexpr const char* projection_help(Projection p) {
+    return with_projection(p, [](auto P) { return decltype(P)::help; });
+}
+// The projections' names, in the table's order.
+inline std::vector<std::string> projection_names() {
+    std::vector<std::string> names;
+    for (Projection p : kProjections) names.emplace_back(projection_name(p));
+    return names;
+}
+// The projection named `name`; false if none is.
+inline bool parse_projection_name(std::string_view name, Projection& out) {
+    for (Projection p : kProjections)
+        if (name == projection_name(p)) return out = p, true;
+    return false;
 }
 
 // visible = false where a projection cannot show the point: the gnomonic and orthographic
 // views of the far hemisphere (C_K(r) <= 0, resp. < 0), the stereographic view of the
 // antipode. The caller clips those (and anything beyond the screen).
 template <class T>
-struct Projected {
-    T rho{};
-    bool visible = true;
-};
-template <class T>
 Projected<T> project(T K, T r, Projection p) {
-    switch (p) {
-        case Projection::azimuthal_equidistant: return {r, true};
-        case Projection::stereographic: {
-            const T h = r / T(2), c = C_K(K, h);
-            if (c <= num<T>(1e-6)) return {T(0), false};  // at (or a rounding short of) the antipode
-            return {T(2) * S_K(K, h) / c, true};
-        }
-        case Projection::gnomonic: {
-            const T c = C_K(K, r);
-            if (c <= num<T>(1e-6)) return {T(0), false};  // the far hemisphere
-            return {S_K(K, r) / c, true};
-        }
-        case Projection::orthographic:
-            return {S_K(K, r), !(C_K(K, r) < T(0))};
-        case Projection::lambert_equal_area: return {T(2) * S_K(K, r / T(2)), true};
-    }
-    return {r, true};
+    return with_projection(p, [&](auto P) { return decltype(P)::project(K, r); });
 }
 
 // The part of the world a projection shows: the disc r <= shown_radius, which the screen's
 // limit circle frames. It is the limit radius R, except on the sphere (K > 0) where the
-// projection's image of r <= R would be unbounded or folded: the gnomonic view is cut at
-// 60 degrees (pi / 3 sqrt K) and the stereographic at 120 degrees (2 pi / 3 sqrt K), where
-// each stretches a radial step four times as much as at the centre (1 / C_K(r)^2, resp.
-// 1 / C_K(r/2)^2), and the orthographic at the equator (pi / 2 sqrt K), where it folds. Each is
+// projection's image of r <= R would be unbounded or folded (the projection's cut: the gnomonic
+// view at 60 degrees, the stereographic at 120, where each stretches a radial step four times as
+// much as at the centre, and the orthographic at the equator, where it folds). Each is
 // continuous in K (it is R until K reaches the cut).
 template <class T>
 T shown_radius(T K, T R, Projection p) {
-    using std::sqrt;
     if (!(K > T(0))) return R;
-    T cut;
-    switch (p) {
-        case Projection::gnomonic: cut = pi_v<T> / T(3) / sqrt(K); break;
-        case Projection::stereographic: cut = T(2) * pi_v<T> / T(3) / sqrt(K); break;
-        case Projection::orthographic: cut = pi_v<T> / T(2) / sqrt(K); break;
-        default: return R;
-    }
+    T cut{};
+    if (!with_projection(p, [&](auto P) { return decltype(P)::cut(K, cut); })) return R;
     return cut < R ? cut : R;
 }
 // The projected radius of the shown disc's rim (the limit circle on the screen).
@@ -96,17 +301,14 @@ T rim_rho(T K, T R, Projection p) {
 // and for K <= 0.
 template <class T>
 bool antipode_circle(T K, Projection p, T& rho) {
-    using std::sqrt;
     if (!(K > T(0))) return false;
-    if (p == Projection::azimuthal_equidistant) return rho = pi_v<T> / sqrt(K), true;
-    if (p == Projection::lambert_equal_area) return rho = T(2) / sqrt(K), true;
-    return false;
+    return with_projection(p, [&](auto P) { return decltype(P)::antipode(K, rho); });
 }
 // Whether every geodesic a projection draws is a straight line: the gnomonic view's (great
 // circles through the projection's centre plane), and every view of the plane (K = 0).
 template <class T>
 bool straight_geodesics(T K, Projection p) {
-    return K == T(0) || p == Projection::gnomonic;
+    return K == T(0) || with_projection(p, [&](auto P) { return decltype(P)::straight(K); });
 }
 
 // A screen point: centre (cx, cy) in px, `scale` px per unit of rho.
@@ -146,28 +348,26 @@ T equidistant_ratio(T w) {
     if (d < T(0)) return acos(w) / sqrt(-d * (T(1) + w));
     return acosh(w) / sqrt(d * (w + T(1)));
 }
+// The equidistant view's factor: E(w) in floating point, in fixed point 2 t ATf(K t^2) / S with
+// t = S / (1 + w) (mul_ATf), rounded once.
+template <class T>
+bool Equidistant::factor(T K, const Vec3<T>& v, T& f) {
+    if constexpr (std::is_floating_point_v<T>) {
+        f = equidistant_ratio(v.w);
+    } else {
+        const T g = quotient(T(2), T(1) + v.w);
+        const T s2 = dot2(v.x, v.x, v.y, v.y);
+        f = mul_ATf(g, quarter(K * s2 * g * g));
+    }
+    return true;
+}
 template <class T>
 ProjectedPoint<T> project_vec_general(T K, Vec3<T> v, Projection proj) {
-    using std::sqrt;
     const T big = num<T>(100);
-    if (v.w < T(0) || v.x > big || v.x < -big || v.y > big || v.y < -big)
+    T f{};
+    if (v.w < T(0) || v.x > big || v.x < -big || v.y > big || v.y < -big ||
+        !with_projection(proj, [&](auto P) { return decltype(P)::factor(K, v, f); }))
         return project_polar(K, to_polar(K, v), proj);
-    T f;
-    switch (proj) {
-        case Projection::azimuthal_equidistant: {
-            if constexpr (std::is_floating_point_v<T>) {
-                f = equidistant_ratio(v.w);
-            } else {
-                const T g = quotient(T(2), T(1) + v.w);
-                const T s2 = dot2(v.x, v.x, v.y, v.y);
-                f = mul_ATf(g, quarter(K * s2 * g * g));
-            }
-            break;
-        }
-        case Projection::stereographic: f = quotient(T(2), T(1) + v.w); break;
-        case Projection::lambert_equal_area: f = sqrt(quotient(T(2), T(1) + v.w)); break;
-        default: return project_polar(K, to_polar(K, v), proj);
-    }
     return {true, v.x * f, v.y * f};
 }
 // (Fixed point's equidistant view, the paper's and the kiosk's, takes fx::equidistant_xy inline:
