@@ -12,30 +12,26 @@
 #include <string>
 #include <vector>
 
-#include "app/frame_loop.hpp"
-#include "app/setup.hpp"
+#include "app/run.hpp"
 #include "web_display.hpp"
 
 namespace noneuclid::web {
 namespace {
 
-// One run: everything the frame loop points into lives here, as long as the run.
+// One run: the page's display and recording, and the run composed on them (app/run.hpp), as
+// long as the run.
 struct Run {
     app::Script script;
     app::Options options;
-    world::Scene scene;
-    platform::LoadedFont font;
     std::unique_ptr<WebDisplay> display;
     char* recording = nullptr;  // the recording so far (open_memstream)
     std::size_t recording_size = 0;
     std::FILE* recording_file = nullptr;
-    std::unique_ptr<app::Recorder> recorder;
-    std::unique_ptr<app::Session> session;
-    std::unique_ptr<app::FrameLoop> loop;
+    app::LiveRun live;
     bool done = false;
 
     ~Run() {
-        loop.reset(), session.reset(), recorder.reset();
+        live.loop.reset(), live.session.reset(), live.recorder.reset();
         if (recording_file) std::fclose(recording_file);
         std::free(recording);
     }
@@ -66,19 +62,10 @@ void start(const std::vector<std::string>& words, Run& run) {
     app::Options& o = run.options;
     o = app::layered_options(static_cast<int>(argv.size()), argv.data(), 1, app::Command::run, run.script);
     refuse_options(o);
-    run.scene = app::load_scene(o);
-    run.font = app::load_font(o);
+    app::prepare_run(run.live, o);
     run.display = std::make_unique<WebDisplay>(o.width, o.height, o.format);
-    if (o.legend.empty()) o.legend = run.display->legend();
     run.recording_file = open_memstream(&run.recording, &run.recording_size);
-    run.recorder = std::make_unique<app::Recorder>(run.recording_file);
-    app::record_settings(*run.recorder, o, "web", run.font, run.display->canvas().format());
-    run.session = app::make_session(o.engine, run.scene, app::session_options(o, run.scene, o.legend), run.font.font,
-                                    run.recorder.get());
-    app::LoopOptions lo;
-    lo.frames = o.frames, lo.fps = o.fps, lo.stats = o.stats;
-    run.loop = std::make_unique<app::FrameLoop>(*run.display, *run.session, o.actions.empty() ? nullptr : &run.script,
-                                                run.recorder.get(), lo);
+    app::compose_run(run.live, o, run.script, *run.display, "web", run.recording_file, nullptr);
 }
 
 // The page's keys (KeyboardEvent.key), as the desktop window has them (README, Controls).
@@ -133,8 +120,8 @@ EMSCRIPTEN_KEEPALIVE int nw_start(const char* words) {
 // One frame. 1 while the run goes on; 0 once it has ended (frames reached, Esc, nw_stop).
 EMSCRIPTEN_KEEPALIVE int nw_tick() {
     if (!noneuclid::web::running()) return 0;
-    if (g_run->loop->tick()) return 1;
-    const int status = g_run->loop->finish();
+    if (g_run->live.loop->tick()) return 1;
+    const int status = g_run->live.loop->finish();
     std::fflush(g_run->recording_file);
     g_run->done = true;
     g_message = status == 0 ? "" : "the run failed (see the console).";
@@ -171,7 +158,7 @@ EMSCRIPTEN_KEEPALIVE int nw_projection_taps(const char* name) {
     const int count = static_cast<int>(std::size(geo::kProjections));
     int now = 0, want = -1;
     for (int i = 0; i < count; ++i) {
-        if (g_run && geo::kProjections[i] == g_run->session->options().draw.projection) now = i;
+        if (g_run && geo::kProjections[i] == g_run->live.session->options().draw.projection) now = i;
         if (std::string(name) == geo::projection_name(geo::kProjections[i])) want = i;
     }
     return want < 0 ? -1 : (want - now + count) % count;
@@ -181,15 +168,15 @@ EMSCRIPTEN_KEEPALIVE int nw_projection_taps(const char* name) {
 EMSCRIPTEN_KEEPALIVE const char* nw_scenes() {
     static std::string names;
     if (names.empty())
-        for (const char* const* n = noneuclid::world::builtin_scene_names(); *n; ++n) names += std::string(*n) + "\n";
+        for (const std::string& n : noneuclid::world::builtin_scene_names()) names += n + "\n";
     return names.c_str();
 }
 
 // The run's state, for the page's status line.
-EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->session->curvature() : 0; }
-EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->session->frame()) : 0; }
+EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->live.session->curvature() : 0; }
+EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->live.session->frame()) : 0; }
 EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
-    return g_run ? noneuclid::geo::projection_name(g_run->session->options().draw.projection) : "";
+    return g_run ? noneuclid::geo::projection_name(g_run->live.session->options().draw.projection) : "";
 }
 EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
     return g_run ? noneuclid::world::engine_name(g_run->options.engine) : "";

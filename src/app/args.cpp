@@ -64,10 +64,12 @@ geo::Projection parse_projection(const std::string& opt, const std::string& text
 }
 
 render::PixelFormat parse_format(const std::string& opt, const std::string& text) {
-    for (render::PixelFormat f :
-         {render::PixelFormat::xrgb8888(), render::PixelFormat::rgb565(), render::PixelFormat::rgb888()})
+    std::vector<std::string> names;
+    for (const render::PixelFormat& f : render::kNamedFormats) {
         if (text == f.name) return f;
-    usage_error(opt + " must be xrgb8888, rgb565 or rgb888, not '" + text + "'.");
+        names.emplace_back(f.name);
+    }
+    usage_error(opt + " must be " + world::or_list(names) + ", not '" + text + "'.");
 }
 
 bool parse_on_off(const std::string& opt, const std::string& text) {

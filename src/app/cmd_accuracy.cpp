@@ -6,6 +6,7 @@
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
+#include "app/options.hpp"
 #include "fixed/accuracy.hpp"
 #include "fixed/tables.hpp"
 #include "geometry/accuracy.hpp"
@@ -146,16 +147,10 @@ int run_accuracy(const fx::AccuracyOptions& options) {
 }  // namespace
 
 int accuracy_command(int argc, char** argv, int first) {
-    fx::AccuracyOptions options;
+    Options o = defaults(Command::accuracy);
     Args args(argc, argv, first);
-    while (args.more()) {
-        const std::string opt = args.next();
-        if (opt == "--samples") options.dense = static_cast<long>(args.count(opt, 2, 100000000));
-        else if (opt == "--random") options.random = static_cast<long>(args.count(opt, 0, 100000000));
-        else if (opt == "--seed") options.seed = static_cast<unsigned long long>(args.count(opt, 0, INT64_MAX));
-        else usage_error("unknown option '" + opt + "' for accuracy; see 'noneuclid --help'.");
-    }
-    return run_accuracy(options);
+    parse_options(args, o, Command::accuracy);
+    return run_accuracy(o.accuracy);
 }
 
 }  // namespace noneuclid::app

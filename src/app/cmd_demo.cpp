@@ -13,19 +13,10 @@
 namespace noneuclid::app {
 
 int demo_command(int argc, char** argv, int first) {
-    std::string dir = "out";
-    world::EngineKind engine = world::kDefaultEngine;
-    int width = 0, height = 0;  // a panel's; 0: each figure's own
-    bool hud = true;
+    Options given = defaults(Command::demo);
     Args args(argc, argv, first);
-    while (args.more()) {
-        const std::string opt = args.next();
-        if (opt == "--out-dir") dir = args.value(opt);
-        else if (opt == "--engine") engine = engine_value(opt, args.value(opt));
-        else if (opt == "--size") parse_size(opt, args.value(opt), width, height);
-        else if (opt == "--no-hud") hud = false;
-        else usage_error("unknown option '" + opt + "' for demo; see 'noneuclid --help'.");
-    }
+    parse_options(args, given, Command::demo);
+    const std::string& dir = given.out_dir;
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) usage_error("cannot create the directory '" + dir + "': " + ec.message() + ".");
@@ -35,8 +26,8 @@ int demo_command(int argc, char** argv, int first) {
     for (int i = 0; i < kFigureCount; ++i) {
         const Figure& f = kFigures[i];
         Options o = defaults(Command::render);
-        o.hud = hud, o.engine = engine;
-        o.width = width > 0 ? width : f.width, o.height = height > 0 ? height : f.height;
+        o.hud = given.hud, o.engine = given.engine;
+        o.width = given.size_given ? given.width : f.width, o.height = given.size_given ? given.height : f.height;
         Picture picture;
         const std::string path = dir + "/" + f.name + ".png";
         if (render_figure(f, o, font.font, picture).stopped) {

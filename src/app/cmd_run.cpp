@@ -1,40 +1,33 @@
-// `noneuclid run`: a scene live on a display (the X11 window, the kiosk's framebuffer, or the
-// headless PNG display), through the one frame loop.
-#include <cerrno>
+// `noneuclid run`: a scene live on a display (app/displays.hpp: the X11 window, the kiosk's
+// framebuffer, or the headless PNG display), through the one frame loop.
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <system_error>
 
 #include "app/commands.hpp"
-#include "app/frame_loop.hpp"
-#include "app/high_scores.hpp"
-#include "app/memory_display.hpp"
+#include "app/displays.hpp"
+#include "app/run.hpp"
 #include "app/setup.hpp"
 
 namespace noneuclid::app {
 
 namespace {
 
-const char* display_name(platform::DisplayKind k) {
-    static const char* const names[] = {"x11", "fbdev", "png"};
-    return names[static_cast<int>(k)];
-}
-
 // The display asked for, or the one that fits this machine; said in one line.
-platform::DisplayKind display_kind(const Options& given) {
+const DisplayRow& display_for(const Options& given) {
     platform::DisplayChoice c;
+    const DisplayRow* row = nullptr;
     if (given.display.empty()) {
         c = platform::choose_display();
+        row = display_row(c.display);
     } else {
-        c.display = given.display == "x11" ? platform::DisplayKind::x11
-                    : given.display == "fbdev" ? platform::DisplayKind::fbdev
-                                               : platform::DisplayKind::png;
+        row = display_named(given.display);
         c.reason = "--display " + given.display + " asked for it";
     }
-    std::fprintf(stderr, "noneuclid: display %s, because %s.\n", display_name(c.display), c.reason.c_str());
-    return c.display;
+    if (!row) usage_error("this build has no display for " + c.reason + ": give --display.");
+    std::fprintf(stderr, "noneuclid: display %s, because %s.\n", row->name, c.reason.c_str());
+    return *row;
 }
 
 }  // namespace
@@ -45,10 +38,9 @@ int run_command(int argc, char** argv, int first) {
         Args args(argc, argv, first);
         parse_options(args, given, Command::run);
     }
-    const platform::DisplayKind kind = display_kind(given);
+    const DisplayRow& shown = display_for(given);
     files::Board board;
-    const bool kiosk = kind == platform::DisplayKind::fbdev;
-    if (kiosk) {
+    if (shown.kiosk) {
         std::string note, error;
         if (!platform::find_board(given.board, board, note, error)) usage_error(error + ".");
         std::fprintf(stderr, "noneuclid: %s.\n", note.c_str());
@@ -56,8 +48,8 @@ int run_command(int argc, char** argv, int first) {
         usage_error("--board and --input are the kiosk's buttons: add --display fbdev.");
     }
     Script script;
-    Options o = layered_options(argc, argv, first, Command::run, script, kiosk ? &board : nullptr);
-    if (kind == platform::DisplayKind::png) {
+    Options o = layered_options(argc, argv, first, Command::run, script, shown.kiosk ? &board : nullptr);
+    if (shown.kind == platform::DisplayKind::png) {
         if (o.frames == 0) o.frames = 600;  // ten seconds of world time: nobody is there to close it
         if (!o.attract_given) o.attract = 1;  // nor at the keys: the autopilot flies
         if (o.screenshot.empty()) o.screenshot = "out/run.png";
@@ -65,26 +57,16 @@ int run_command(int argc, char** argv, int first) {
         const std::filesystem::path dir = std::filesystem::path(o.screenshot).parent_path();
         if (!dir.empty()) std::filesystem::create_directories(dir, ec);
     }
-    const world::Scene scene = load_scene(o);
-    const platform::LoadedFont font = load_font(o);
+    LiveRun run;
+    prepare_run(run, o);
 
-    std::unique_ptr<Display> display;
     std::string error;
-    if (kind == platform::DisplayKind::x11) {
-        display = platform::open_window({o.width, o.height}, error);
-    } else if (kind == platform::DisplayKind::fbdev) {
-        platform::KioskSpec spec;
-        spec.device = o.device, spec.fps = o.fps, spec.board = board, spec.input = o.input;
-        display = platform::open_kiosk(spec, error);
-    } else {
-        display = std::make_unique<MemoryDisplay>(o.width, o.height, o.format);
-    }
+    std::unique_ptr<Display> display = shown.open(o, board, error);
     if (!display) {
         std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
         return 2;
     }
-    if (o.legend.empty()) o.legend = display->legend();
-    if (kiosk && given.size_given)
+    if (shown.kiosk && given.size_given)
         std::fprintf(stderr, "noneuclid: --size is left unused: the kiosk draws at the framebuffer's size, %dx%d.\n",
                      display->canvas().width(), display->canvas().height());
 
@@ -92,28 +74,20 @@ int run_command(int argc, char** argv, int first) {
     // short by an error leaves no half recording in its place (a stop signal ends the run
     // normally, and its recording is kept).
     platform::AtomicFile recording;
-    std::FILE* file = nullptr;
     if (!o.record.empty()) {
         std::string why;
         if (!recording.open(o.record, why)) {
             std::fprintf(stderr, "noneuclid: the recording: %s\n", why.c_str());
             return 2;
         }
-        file = recording.file();
     }
-    const std::unique_ptr<HighScoreTable> scores = scene.game.on ? open_scores(o.scores) : nullptr;
+    const std::unique_ptr<HighScoreTable> scores = run.scene.game.on ? open_scores(o.scores) : nullptr;
     if (scores && !o.best_given) o.best = scores->best();
-    Recorder recorder(file);
-    if (file) record_settings(recorder, o, display_name(kind), font, display->canvas().format());
-    const std::unique_ptr<Session> session = make_session(o.engine, scene, session_options(o, scene, o.legend), font.font,
-                                                          file ? &recorder : nullptr, scores.get());
-    LoopOptions lo;
-    lo.frames = o.frames, lo.fps = o.fps, lo.stats = o.stats, lo.screenshot = o.screenshot;
-    FrameLoop loop(*display, *session, o.actions.empty() ? nullptr : &script, file ? &recorder : nullptr, lo);
-    int status = loop.run();
+    compose_run(run, o, script, *display, shown.name, recording.file(), scores.get());
+    int status = run.loop->run();
     display.reset();  // the console back before the last lines
     std::string why;
-    if (file && !recording.commit(why)) {
+    if (recording.file() && !recording.commit(why)) {
         std::fprintf(stderr, "noneuclid: the recording: %s\n", why.c_str());
         status = status ? status : 1;
     }

@@ -8,13 +8,10 @@
 namespace noneuclid::app {
 
 int scores_command(int argc, char** argv, int first) {
-    std::string choice;
+    Options o = defaults(Command::scores);
     Args args(argc, argv, first);
-    while (args.more()) {
-        const std::string opt = args.next();
-        if (opt == "--scores") choice = args.value(opt);
-        else usage_error("unknown option '" + opt + "' for scores; see 'noneuclid --help'.");
-    }
+    parse_options(args, o, Command::scores);
+    const std::string& choice = o.scores;
     if (choice == "none") usage_error("scores --scores none: name the table to print, or leave --scores out.");
     const std::unique_ptr<HighScoreTable> table = open_scores(choice);
     if (!table) return 1;

@@ -34,12 +34,11 @@ int dump_command(int argc, char** argv, int first) {
         make_session(o.engine, scene, session_options(plain, scene, o.legend), render::builtin_font(), nullptr);
     ScriptPlayer player(script.events);
     std::string line;
-    s->play_due(player);
+    s->start(player);
     s->dump(o.width, o.height, line);
     if (!put(line)) return write_failed();
     for (long f = 0; f < o.frames; ++f) {
-        s->step();
-        s->play_due(player);
+        s->advance(player);
         line.clear();
         s->dump(o.width, o.height, line);
         if (!put(line)) return write_failed();

@@ -10,6 +10,7 @@ FrameLoop::FrameLoop(Display& display, Session& session, const Script* script, R
                      const LoopOptions& o)
     : display_(display), session_(session), recorder_(recorder), o_(o) {
     if (script) player_ = ScriptPlayer(script->events);
+    session_.start(player_);
     platform::catch_stop_signals();
     period_ = static_cast<int64_t>(1e9 / (o_.fps > 0 ? o_.fps : 60) + 0.5);
     start_ = next_ = fps_since_ = platform::monotonic_ns();
@@ -24,13 +25,12 @@ bool FrameLoop::tick() {
         return false;
     }
     if (display_.closing() || session_.quit() || platform::stop_signal()) return false;
-    session_.play_due(player_);
     const render::Canvas canvas = display_.canvas();
     if (recorder_ && (canvas.width() != width_ || canvas.height() != height_)) {
         width_ = canvas.width(), height_ = canvas.height();
         recorder_->setting("size", std::to_string(width_) + "x" + std::to_string(height_));
     }
-    session_.step();
+    session_.advance(player_);
     session_.draw(canvas);
     display_.present();
     ++frames_, ++fps_frames_;

@@ -1,5 +1,5 @@
-// The one frame loop, for every display: input until the frame is due, the scripted events due,
-// one step, the picture, present; paced to a frame-rate cap (world time is the session's dt a
+// The one frame loop, for every display: input until the frame is due, one frame of world time
+// (Session::advance: one step, then the scripted events due), the picture, present; paced to a frame-rate cap (world time is the session's dt a
 // frame whatever the clock says, so a recording replays exactly); the frame rate for the HUD;
 // the window's size in the recording when it changes; at the end the screenshot and --stats.
 // tick() is one frame, so a host that owns the loop (a browser's animation frames) can drive

@@ -1,97 +1,92 @@
-// `noneuclid --help` and the version.
+// `noneuclid --help`, each command's --help, `noneuclid scenes` and the version: generated from
+// the tables of commands (app/commands.cpp), options (app/options.cpp) and scenes
+// (world/scenes.cpp), so that help and code cannot disagree.
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "app/commands.hpp"
+#include "world/scene.hpp"
 
 namespace noneuclid::app {
+
+namespace {
+// `text` after `indent` columns, wrapped at 100.
+std::string wrapped(const std::string& text, std::size_t indent) {
+    std::string out, line;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find(' ', at);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(at, end - at);
+        if (!line.empty() && indent + line.size() + 1 + word.size() > 100) {
+            out += line + "\n" + std::string(indent, ' ');
+            line.clear();
+        }
+        line += (line.empty() ? "" : " ") + word;
+        at = end + 1;
+    }
+    return out + line;
+}
+}  // namespace
 
 const char* version() { return NONEUCLID_VERSION; }
 
 void print_help() {
-    std::fputs(
+    std::string out =
         "Usage: noneuclid [COMMAND] [OPTIONS]\n"
         "\n"
         "A 2D engine for spaces of constant curvature K in [-1, 1], after Osudin, Child & He\n"
         "(2019): bodies fly through a spherical, flat or hyperbolic world while K changes.\n"
         "\n"
-        "commands:\n"
-        "  run        a scene live: an X11 window when DISPLAY is set, the framebuffer and the\n"
-        "             board's buttons on a console (the kiosk), else the headless PNG display\n"
-        "  render     run a scene and write its last frame as a PNG picture\n"
-        "  dump       run a scene and write its state as JSON Lines, one line a frame\n"
-        "  demo       the kiosk's picture and the paper's figures as PNG files in ./out; what\n"
-        "             the program does when given no command\n"
-        "  accuracy   every fixed-point function against std:: double and the engines at the\n"
-        "             screen, as tables; exit status 1 if a row misses its bound\n"
-        "  buttons    print each press and release of the board's buttons (wiring check)\n"
-        "  scores     print the game's high-score table (--scores FILE: another table)\n"
+        "commands:\n";
+    for (const CommandRow& c : kCommands) {
+        std::string head = std::string("  ") + c.name;
+        head.resize(12, ' ');
+        out += head + wrapped(c.summary, 12) + "\n";
+    }
+    out +=
         "\n"
-        "the world (run, render, dump):\n"
-        "  --scene NAME|FILE  built-in kiosk, asteroids (the game), fig1, fig14, fig15, fig16,\n"
-        "                     fig17, stress, or a TOML scene file (default kiosk; run --display\n"
-        "                     fbdev: the board's)\n"
-        "  --curvature K      start at this K instead of the scene's, -1 <= K <= 1\n"
-        "  --engine E         fixed (the device's, default), double, float, or paper (the\n"
-        "                     paper's formulas, literally)\n"
-        "  --actions FILE     timed presses and releases, or a recording (run --record): its\n"
-        "                     settings are defaults under the command line's options\n"
-        "  --frames N         steps after the first frame (default 60; run: until closed, png\n"
-        "                     600)\n"
-        "  --projection P     equidistant (default), stereographic, gnomonic, orthographic,\n"
-        "                     lambert\n"
-        "  --size WxH         canvas, window or PNG size in pixels (default 800x480)\n"
-        "  --bodies N, --vertices N, --tessellation N   the stress scene (200, 8, 8)\n"
-        "  --dt S             render, dump: seconds a step (default 1/60; run: always 1/60)\n"
-        "\n"
-        "the picture (run, render):\n"
-        "  --aa, --no-aa      anti-aliased lines (default off; the kiosk: the board's)\n"
-        "  --hud, --no-hud    K, the scene and the controls over the picture (run: on)\n"
-        "  --font F           the HUD's font: builtin or a PSF console font file (default:\n"
-        "                     $NONEUCLID_FONT, else Terminus or Fixed from\n"
-        "                     /usr/share/consolefonts, else builtin)\n"
-        "  --legend L         the HUD's controls line: keys or buttons (default: the display's)\n"
-        "  --format F         xrgb8888 (default), rgb565, rgb888 (render; run's png display)\n"
-        "  --out FILE.png     render: where to write the last frame (--out or --gif required)\n"
-        "  --gif FILE.gif     render: the run as an animated GIF, at the canvas size\n"
-        "  --gif-every N      render: a GIF frame every N frames (default 2: 30 a second)\n"
-        "  --width PX         render: line width in pixels (default 1)\n"
-        "  --timelapse EVERY  render: every EVERY-th frame's bodies over the earlier ones\n"
-        "  --timelapse-grids EVERY  render: and every EVERY-th frame's grid, coloured by K\n"
-        "  --best N           the game's high score to show (run: the table's; a recording's own)\n"
-        "\n"
-        "run:\n"
-        "  --display D        x11, fbdev, fbdev:/dev/fbN, or png (headless: attract mode after\n"
-        "                     1 s, the last frame to --screenshot, default out/run.png)\n"
-        "  --record FILE      write every control as it took effect, with the settings:\n"
-        "                     render --actions FILE draws the last frame again, bit for bit\n"
-        "  --screenshot F     at the end, what the display shows, as a PNG\n"
-        "  --threads N        draw on N threads (the same pixels; default 1, or the board's)\n"
-        "  --attract SECONDS  attract mode after this long without input (0: off, the default;\n"
-        "                     the kiosk: the board's, 120)\n"
-        "  --fps CAP          frame rate cap (default 60); world time is 1/60 s a frame\n"
-        "  --stats            at the end: frames, wall time, CPU; the frame rate on the HUD\n"
-        "  --board NAME|FILE  fbdev: rpi-zero2w, rpi3, rpi4, rpi5, generic or a board file\n"
-        "                     (default: detected from the device-tree model)\n"
-        "  --input I          fbdev: gpio, evdev, none or auto (default: the board's buttons)\n"
-        "  --scores FILE      the game's high-score table (default: scores in $STATE_DIRECTORY,\n"
-        "                     else $XDG_STATE_HOME/noneuclid, else ~/.local/state/noneuclid;\n"
-        "                     none: not kept)\n"
-        "\n"
-        "demo:\n"
-        "  --out-dir DIR (default out), --engine E, --size WxH, --no-hud\n"
-        "accuracy:\n"
-        "  --samples N (262144), --random N (65536), --seed S (20190101)\n"
-        "buttons:\n"
-        "  --board, --input gpio|evdev|auto, --events N, --timeout SECONDS\n"
-        "scores:\n"
-        "  --scores FILE\n"
+        "'noneuclid COMMAND --help' lists a command's options; options with no command are run's\n"
+        "(noneuclid --scene asteroids plays the game).\n"
         "\n"
         "keys (run on a desktop): arrows or WASD fly, Space (or Ctrl) fires, + and - change K,\n"
         "1 2 3 set K to -1, 0, +1, P the next projection, H the HUD, R reset, Esc quits.\n"
         "\n"
-        "  -h, --help         this help\n"
-        "  --version          the version\n",
-        stdout);
+        "  -h, --help          this help\n"
+        "  --version           the version\n";
+    std::fputs(out.c_str(), stdout);
+}
+
+void print_command_help(Command c) {
+    const CommandRow& row = kCommands[static_cast<int>(c)];
+    std::string out = std::string("Usage: noneuclid ") + row.name + " [OPTIONS]\n\n" + wrapped(row.summary, 0) + ".\n";
+    const std::vector<OptionHelp> options = options_help(c);
+    out += options.empty() ? "\nIt takes no options.\n" : "\noptions:\n";
+    auto column = [](std::string head, std::size_t width) {
+        head.resize(std::max(head.size() + 1, width), ' ');
+        return head;
+    };
+    for (const OptionHelp& h : options) {
+        const std::string head = column("  " + h.head, 24);
+        out += head + wrapped(h.help, head.size()) + "\n";
+        for (const OptionHelp::Choice& ch : h.choices) {
+            const std::string name = column("      " + ch.name, 24);
+            out += name + wrapped(ch.help, name.size()) + "\n";
+        }
+    }
+    std::fputs(out.c_str(), stdout);
+}
+
+int scenes_command(int argc, char** argv, int first) {
+    Options o = defaults(Command::scenes);
+    Args args(argc, argv, first);
+    parse_options(args, o, Command::scenes);
+    std::size_t width = 0;
+    for (const world::SceneInfo& s : world::builtin_scenes()) width = std::max(width, std::string(s.name).size());
+    for (const world::SceneInfo& s : world::builtin_scenes())
+        std::printf("%-*s  %s\n", static_cast<int>(width), s.name, s.about);
+    return 0;
 }
 
 }  // namespace noneuclid::app

@@ -1,5 +1,6 @@
-// noneuclid: the command line. Each command lives in a file of its own (app/cmd_*.cpp); a bad
-// word anywhere is one sentence on stderr and exit status 2.
+// noneuclid: the command line. Each command lives in a file of its own (app/cmd_*.cpp, named in
+// app/commands.cpp's table); options with no command are run's. A bad word anywhere is one
+// sentence on stderr and exit status 2.
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,9 +15,12 @@ int dispatch(int argc, char** argv) {
     using namespace noneuclid::app;
     if (argc == 1) return demo_command(argc, argv, 1);
     const std::string word = argv[1];
+    Command command = Command::run;
+    const bool named = parse_command(word, command);
     for (int i = 1; i < argc; ++i) {  // help wins wherever it is
         if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "--help") == 0) {
-            print_help();
+            if (named) print_command_help(command);
+            else print_help();
             return 0;
         }
     }
@@ -25,14 +29,8 @@ int dispatch(int argc, char** argv) {
         std::printf("noneuclid %s\n", version());
         return 0;
     }
-    if (word == "run") return run_command(argc, argv, 2);
-    if (word == "render") return render_command(argc, argv, 2);
-    if (word == "dump") return dump_command(argc, argv, 2);
-    if (word == "demo") return demo_command(argc, argv, 2);
-    if (word == "accuracy") return accuracy_command(argc, argv, 2);
-    if (word == "buttons") return buttons_command(argc, argv, 2);
-    if (word == "scores") return scores_command(argc, argv, 2);
-    if (word[0] == '-') return accuracy_command(argc, argv, 1);  // `noneuclid --samples N`, as before
+    if (named) return kCommands[static_cast<int>(command)].run(argc, argv, 2);
+    if (word[0] == '-') return run_command(argc, argv, 1);  // `noneuclid --scene asteroids`: run's options
     usage_error("unknown command '" + word + "'; see 'noneuclid --help'.");
 }
 

@@ -1,22 +1,58 @@
 #include "app/options.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+#include "app/displays.hpp"
 #include "world/quote.hpp"
 
 namespace noneuclid::app {
 
 namespace {
+
 constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
-constexpr unsigned kDump = bit(Command::dump), kRender = bit(Command::render), kRun = bit(Command::run);
+constexpr unsigned kRun = bit(Command::run), kRender = bit(Command::render), kDump = bit(Command::dump),
+                   kDemo = bit(Command::demo), kAccuracy = bit(Command::accuracy), kButtons = bit(Command::buttons),
+                   kScores = bit(Command::scores);
 constexpr unsigned kWorld = kDump | kRender | kRun, kPicture = kRender | kRun;
 
-std::string legend_value(const std::string& opt, const std::string& text) {
-    if (text != "keys" && text != "buttons") usage_error(opt + " must be keys or buttons, not '" + text + "'.");
-    return text;
+using Choice = OptionHelp::Choice;
+std::vector<Choice> engine_choices() {
+    std::vector<Choice> out;
+    for (std::size_t i = 0; i < world::kEngineCount; ++i)
+        out.push_back({world::engine_name({i}), world::engine_help({i})});
+    return out;
 }
-std::string input_value(const std::string& opt, const std::string& text) {
-    if (text != "auto" && text != "gpio" && text != "evdev" && text != "none")
-        usage_error(opt + " must be auto, gpio, evdev or none, not '" + text + "'.");
-    return text;
+std::vector<Choice> projection_choices() {
+    std::vector<Choice> out;
+    for (geo::Projection p : geo::kProjections) out.push_back({geo::projection_name(p), geo::projection_help(p)});
+    return out;
+}
+std::vector<Choice> format_choices() {
+    std::vector<Choice> out;
+    for (const render::PixelFormat& f : render::kNamedFormats)
+        out.push_back({f.name, std::to_string(f.bits_per_pixel) + " bits a pixel"});
+    return out;
+}
+std::vector<Choice> display_choices() {
+    std::vector<Choice> out;
+    std::size_t n = 0;
+    const DisplayRow* rows = display_rows(n);
+    for (std::size_t i = 0; i < n; ++i) out.push_back({rows[i].name, rows[i].help});
+    return out;
+}
+std::vector<std::string> names_of(const std::vector<Choice>& choices) {
+    std::vector<std::string> names;
+    for (const Choice& c : choices) names.push_back(c.name);
+    return names;
+}
+
+std::string one_of(const std::string& opt, const std::string& text, const std::vector<std::string>& allowed) {
+    for (const std::string& a : allowed)
+        if (text == a) return text;
+    usage_error(opt + " must be " + world::or_list(allowed) + ", not '" + text + "'.");
 }
 void display_value(const std::string& text, Options& o) {
     o.display = text, o.device.clear();
@@ -24,9 +60,130 @@ void display_value(const std::string& text, Options& o) {
         o.display = "fbdev", o.device = text.substr(6);
         if (o.device.empty()) usage_error("--display fbdev: needs a device after the colon, e.g. fbdev:/dev/fb1.");
     }
-    if (o.display != "x11" && o.display != "fbdev" && o.display != "png")
-        usage_error("--display must be x11, fbdev, fbdev:/dev/fbN or png, not '" + text + "'.");
+    if (!display_named(o.display))
+        usage_error("--display must be " + world::or_list(names_of(display_choices())) + " (or fbdev:/dev/fbN), not '" +
+                    text + "'.");
 }
+
+// One option: its name, the word its value takes in --help ("" for a flag), the commands that
+// take it, its help line, the choices --help lists under it (if any), and its reader.
+struct OptionRow {
+    const char* name;
+    const char* value;
+    unsigned commands;
+    const char* help;
+    std::vector<Choice> (*choices)();
+    void (*read)(Args& a, const std::string& opt, Options& o, Command c);
+};
+
+// The options, in the order --help lists them. (A reader's value checks are its sentences.)
+const OptionRow kOptions[] = {
+    {"--scene", "NAME|FILE", kWorld,
+     "a built-in scene ('noneuclid scenes' lists them) or a TOML scene file (default kiosk; the kiosk: the board's)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.scene = a.value(opt); }},
+    {"--curvature", "K", kWorld, "start at this K instead of the scene's, -1 <= K <= 1", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.has_curvature = true, o.curvature = a.number(opt, -1, 1); }},
+    {"--engine", "E", kWorld | kDemo, "the engine:", engine_choices,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.engine = engine_value(opt, a.value(opt)); }},
+    {"--projection", "P", kWorld, "the view (P cycles them live):", projection_choices,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.projection = parse_projection(opt, a.value(opt)); }},
+    {"--actions", "FILE", kWorld,
+     "timed presses and releases, or a recording (run --record): its settings are defaults under the command line's",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.actions = a.value(opt); }},
+    {"--frames", "N", kWorld, "steps after the first frame (default 60; run: until closed, its png display 600)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command c) {
+         o.frames = static_cast<long>(a.count(opt, c == Command::run ? 1 : 0, 100000000));
+     }},
+    {"--size", "WxH", kWorld | kDemo, "canvas, window or picture size in pixels (default 800x480; demo: a panel's)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { parse_size(opt, a.value(opt), o.width, o.height), o.size_given = true; }},
+    {"--dt", "S", kDump | kRender, "world seconds a step (default 1/60; run: always 1/60)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.dt = a.number(opt, 1e-4, 1); }},
+    {"--bodies", "N", kWorld, "the stress scene's bodies (200)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.params.bodies = static_cast<int>(a.count(opt, 1, 100000)); }},
+    {"--vertices", "N", kWorld, "the stress scene's vertices a body (8)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.params.vertices = static_cast<int>(a.count(opt, 1, 10000)); }},
+    {"--tessellation", "N", kWorld, "the stress scene's points an edge (8)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.params.tessellation = static_cast<int>(a.count(opt, 1, 256)); }},
+    {"--aa", "", kPicture, "anti-aliased lines (default off; the kiosk: the board's)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.aa = true; }},
+    {"--no-aa", "", kPicture, "aliased lines", nullptr, [](Args&, const std::string&, Options& o, Command) { o.aa = false; }},
+    {"--hud", "", kPicture, "K, the scene and the controls over the picture (run: on)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.hud = true; }},
+    {"--no-hud", "", kPicture | kDemo, "no HUD", nullptr, [](Args&, const std::string&, Options& o, Command) { o.hud = false; }},
+    {"--font", "F", kPicture,
+     "the HUD's font: builtin or a PSF console font file (default $NONEUCLID_FONT, else Terminus or Fixed from "
+     "/usr/share/consolefonts, else builtin)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.font = a.value(opt); }},
+    {"--legend", "L", kPicture, "the HUD's controls line: keys or buttons (default: the display's)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.legend = one_of(opt, a.value(opt), {"keys", "buttons"}); }},
+    {"--format", "F", kPicture, "the pixel format (render; run's png display):", format_choices,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.format = parse_format(opt, a.value(opt)); }},
+    {"--best", "N", kPicture, "the game's high score to show (run: the table's; a recording's own)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         o.best = static_cast<long>(a.count(opt, 0, 1000000000)), o.best_given = true;
+     }},
+    {"--out", "FILE.png", kRender, "where to write the last frame (--out or --gif is required)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.out = a.value(opt); }},
+    {"--gif", "FILE.gif", kRender, "the run as an animated GIF, at the canvas size", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.gif = a.value(opt); }},
+    {"--gif-every", "N", kRender, "a GIF frame every N frames (default 2: 30 a second)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.gif_every = static_cast<long>(a.count(opt, 1, 100000000)); }},
+    {"--width", "PX", kRender, "line width in pixels (default 1)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.line_width = a.number(opt, 0.1, 64); }},
+    {"--timelapse", "EVERY", kRender, "every EVERY-th frame's bodies over the earlier ones", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.timelapse = static_cast<long>(a.count(opt, 1, 100000000)); }},
+    {"--timelapse-grids", "EVERY", kRender, "and every EVERY-th frame's grid, coloured by K", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         o.timelapse_grids = static_cast<long>(a.count(opt, 1, 100000000));
+     }},
+    {"--display", "D", kRun, "where to show it (default: a window if DISPLAY is set, the kiosk on a console, else png):",
+     display_choices, [](Args& a, const std::string& opt, Options& o, Command) { display_value(a.value(opt), o); }},
+    {"--record", "FILE", kRun, "every control as it took effect, with the settings: render --actions FILE replays it", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.record = a.value(opt); }},
+    {"--screenshot", "F", kRun, "at the end, what the display shows, as a PNG", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.screenshot = a.value(opt); }},
+    {"--threads", "N", kRun, "draw on N threads (the same pixels; default 1, or the board's)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.threads = static_cast<int>(a.count(opt, 1, 16)); }},
+    {"--attract", "SECONDS", kRun, "attract mode after this long without input (0: off, the default; the kiosk: the board's)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.attract = a.number(opt, 0, 1e7), o.attract_given = true; }},
+    {"--fps", "CAP", kRun, "frame rate cap (default 60); world time is 1/60 s a frame whatever it is", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.fps = a.number(opt, 1, 1000); }},
+    {"--stats", "", kRun, "at the end: frames, wall time, CPU; the frame rate on the HUD", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.stats = true; }},
+    {"--board", "NAME|FILE", kRun | kButtons,
+     "the kiosk's board: rpi-zero2w, rpi3, rpi4, rpi5, generic or a board file (default: from the device-tree model)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.board = a.value(opt); }},
+    {"--input", "I", kRun | kButtons, "the kiosk's buttons: gpio, evdev, auto (the board's), none (run only)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command c) {
+         o.input = one_of(opt, a.value(opt), c == Command::buttons ? std::vector<std::string>{"auto", "gpio", "evdev"}
+                                                                   : std::vector<std::string>{"auto", "gpio", "evdev", "none"});
+     }},
+    {"--scores", "FILE", kRun | kScores,
+     "the game's high-score table (default scores in $STATE_DIRECTORY, else $XDG_STATE_HOME/noneuclid, else "
+     "~/.local/state/noneuclid; run: none keeps none)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.scores = a.value(opt); }},
+    {"--out-dir", "DIR", kDemo, "where the pictures go (default out)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.out_dir = a.value(opt); }},
+    {"--samples", "N", kAccuracy, "evenly spaced samples a row (262144)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.accuracy.dense = static_cast<long>(a.count(opt, 2, 100000000)); }},
+    {"--random", "N", kAccuracy, "random samples a row (65536)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.accuracy.random = static_cast<long>(a.count(opt, 0, 100000000)); }},
+    {"--seed", "S", kAccuracy, "the random samples' seed (20190101)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         o.accuracy.seed = static_cast<unsigned long long>(a.count(opt, 0, INT64_MAX));
+     }},
+    {"--events", "N", kButtons, "stop after N presses and releases (default: no limit)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.events = static_cast<long>(a.count(opt, 1, 1000000000)); }},
+    {"--timeout", "SECONDS", kButtons, "stop after this long (default: never)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.timeout = a.number(opt, 0.001, 1e7); }},
+};
+
+const OptionRow* find_option(const std::string& name) {
+    for (const OptionRow& r : kOptions)
+        if (name == r.name) return &r;
+    return nullptr;
+}
+
 }  // namespace
 
 world::EngineKind engine_value(const std::string& opt, const std::string& text) {
@@ -35,69 +192,46 @@ world::EngineKind engine_value(const std::string& opt, const std::string& text) 
     return e;
 }
 
-const char* command_name(Command c) {
-    switch (c) {
-        case Command::dump: return "dump";
-        case Command::render: return "render";
-        case Command::run: return "run";
-    }
-    return "?";
-}
-
 Options defaults(Command c) {
     Options o;
     if (c == Command::run) o.frames = 0, o.hud = true;
+    if (c == Command::demo) o.hud = true;  // (and each figure's own size unless --size)
     return o;
 }
 
 bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
-    const unsigned me = bit(c);
-    auto is = [&](const char* name, unsigned commands) { return opt == name && (commands & me); };
-    if (is("--scene", kWorld)) o.scene = a.value(opt);
-    else if (is("--curvature", kWorld)) o.has_curvature = true, o.curvature = a.number(opt, -1, 1);
-    else if (is("--engine", kWorld)) o.engine = engine_value(opt, a.value(opt));
-    else if (is("--actions", kWorld)) o.actions = a.value(opt);
-    else if (is("--projection", kWorld)) o.projection = parse_projection(opt, a.value(opt));
-    else if (is("--bodies", kWorld)) o.params.bodies = static_cast<int>(a.count(opt, 1, 100000));
-    else if (is("--vertices", kWorld)) o.params.vertices = static_cast<int>(a.count(opt, 1, 10000));
-    else if (is("--tessellation", kWorld)) o.params.tessellation = static_cast<int>(a.count(opt, 1, 256));
-    else if (is("--frames", kWorld)) o.frames = static_cast<long>(a.count(opt, c == Command::run ? 1 : 0, 100000000));
-    else if (is("--dt", kDump | kRender)) o.dt = a.number(opt, 1e-4, 1);
-    else if (is("--size", kWorld)) parse_size(opt, a.value(opt), o.width, o.height), o.size_given = true;
-    else if (is("--format", kPicture)) o.format = parse_format(opt, a.value(opt));
-    else if (is("--aa", kPicture)) o.aa = true;
-    else if (is("--no-aa", kPicture)) o.aa = false;
-    else if (is("--hud", kPicture)) o.hud = true;
-    else if (is("--no-hud", kPicture)) o.hud = false;
-    else if (is("--font", kPicture)) o.font = a.value(opt);
-    else if (is("--legend", kPicture)) o.legend = legend_value(opt, a.value(opt));
-    else if (is("--best", kPicture)) o.best = static_cast<long>(a.count(opt, 0, 1000000000)), o.best_given = true;
-    else if (is("--scores", kRun)) o.scores = a.value(opt);
-    else if (is("--width", kRender)) o.line_width = a.number(opt, 0.1, 64);
-    else if (is("--timelapse", kRender)) o.timelapse = static_cast<long>(a.count(opt, 1, 100000000));
-    else if (is("--timelapse-grids", kRender)) o.timelapse_grids = static_cast<long>(a.count(opt, 1, 100000000));
-    else if (is("--out", kRender)) o.out = a.value(opt);
-    else if (is("--gif", kRender)) o.gif = a.value(opt);
-    else if (is("--gif-every", kRender)) o.gif_every = static_cast<long>(a.count(opt, 1, 100000000));
-    else if (is("--display", kRun)) display_value(a.value(opt), o);
-    else if (is("--board", kRun)) o.board = a.value(opt);
-    else if (is("--input", kRun)) o.input = input_value(opt, a.value(opt));
-    else if (is("--record", kRun)) o.record = a.value(opt);
-    else if (is("--screenshot", kRun)) o.screenshot = a.value(opt);
-    else if (is("--attract", kRun)) o.attract = a.number(opt, 0, 1e7), o.attract_given = true;
-    else if (is("--threads", kRun)) o.threads = static_cast<int>(a.count(opt, 1, 16));
-    else if (is("--fps", kRun)) o.fps = a.number(opt, 1, 1000);
-    else if (is("--stats", kRun)) o.stats = true;
-    else return false;
+    const OptionRow* row = find_option(opt);
+    if (!row || !(row->commands & bit(c))) return false;
+    row->read(a, opt, o, c);
     return true;
 }
 
 void parse_options(Args& a, Options& o, Command c) {
     while (a.more()) {
         const std::string opt = a.next();
-        if (!parse_option(a, opt, o, c))
-            usage_error("unknown option '" + opt + "' for " + command_name(c) + "; see 'noneuclid --help'.");
+        if (parse_option(a, opt, o, c)) continue;
+        const OptionRow* row = find_option(opt);
+        std::vector<std::string> others;
+        for (int i = 0; row && i < kCommandCount; ++i)
+            if (row->commands & (1u << i)) others.push_back(command_name(static_cast<Command>(i)));
+        if (!others.empty())
+            usage_error("'" + opt + "' is not an option of " + command_name(c) + " but of " + world::or_list(others) +
+                        "; see 'noneuclid " + command_name(c) + " --help'.");
+        usage_error("unknown option '" + opt + "' for " + command_name(c) + "; see 'noneuclid " + command_name(c) +
+                    " --help'.");
     }
+}
+
+std::vector<OptionHelp> options_help(Command c) {
+    std::vector<OptionHelp> out;
+    for (const OptionRow& r : kOptions) {
+        if (!(r.commands & bit(c))) continue;
+        OptionHelp h{std::string(r.name) + (*r.value ? std::string(" ") + r.value : ""), r.help, {}};
+        if (r.choices)
+            for (const Choice& ch : r.choices()) h.choices.push_back({ch.name, ch.help});
+        out.push_back(std::move(h));
+    }
+    return out;
 }
 
 void apply_settings(const Script& script, Options& o, Command c) {

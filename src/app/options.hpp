@@ -1,12 +1,15 @@
-// The options of the world commands (dump, render, run): one struct, one parser, and which
-// command takes which option. A recording's settings (app/script.hpp) are these options too:
-// the commands layer them as built-in defaults, then the board's (the kiosk), then the
+// The options of every command: one struct, one table of options (app/options.cpp: each
+// option's name, value, commands, help line and reader) from which the parser and each
+// command's --help come. A recording's settings (app/script.hpp) are these options too: the
+// world commands layer them as built-in defaults, then the board's (the kiosk), then the
 // recording's, then the command line's, each over the last.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "app/args.hpp"
+#include "fixed/accuracy.hpp"
 #include "world/engines.hpp"
 #include "app/script.hpp"
 #include "files/board.hpp"
@@ -14,7 +17,9 @@
 
 namespace noneuclid::app {
 
-enum class Command { dump, render, run };
+// The commands (app/main.cpp's table has what each does).
+enum class Command { run, render, dump, demo, accuracy, buttons, scores, scenes };
+inline constexpr int kCommandCount = 8;
 
 struct Options {
     // The world (dump, render, run)
@@ -54,14 +59,30 @@ struct Options {
     double fps = 60;
     bool stats = false;
     bool size_given = false;    // --size or a recording's size (the window's, else the board's)
+    // The other commands
+    std::string out_dir = "out";   // demo
+    fx::AccuracyOptions accuracy;  // accuracy: --samples, --random, --seed
+    long events = 0;               // buttons: stop after this many (0: no limit)
+    double timeout = 0;            // buttons: stop after this many seconds (0: none)
 };
 
 // The defaults of each command.
 Options defaults(Command c);
 // Reads one option `opt` (its value from `args`) into `o`; false if `c` has no such option.
 bool parse_option(Args& args, const std::string& opt, Options& o, Command c);
-// Reads every word of `args` as an option of `c` (a UsageError for one it has not).
+// Reads every word of `args` as an option of `c` (a UsageError for one it has not, naming the
+// commands that have it).
 void parse_options(Args& args, Options& o, Command c);
+// Command c's options as --help shows them: each one's name and value, its help line, and the
+// choices it lists under it (engines, projections, ...).
+struct OptionHelp {
+    struct Choice {
+        std::string name, help;
+    };
+    std::string head, help;
+    std::vector<Choice> choices;
+};
+std::vector<OptionHelp> options_help(Command c);
 // A recording's settings over `o`: a bad one is a UsageError naming the file and line.
 void apply_settings(const Script& script, Options& o, Command c);
 // The kiosk board's [display] defaults over `o`.
@@ -74,6 +95,8 @@ Options layered_options(int argc, char** argv, int first, Command c, Script& scr
                         const files::Board* board = nullptr);
 
 const char* command_name(Command c);
+// The command named `name`; false if none is.
+bool parse_command(const std::string& name, Command& out);
 // The engine named `text`, or a UsageError naming `opt`.
 world::EngineKind engine_value(const std::string& opt, const std::string& text);
 

@@ -45,7 +45,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
     };
     ScriptPlayer player;
     if (script) player = ScriptPlayer(script->events);
-    s->play_due(player);
+    s->start(player);
     for (long f = 0;; ++f) {
         if (o.timelapse > 0 && o.timelapse_grids > 0 && f % o.timelapse_grids == 0)
             s->draw_world(layer, Layers::grids_tinted, false);
@@ -56,8 +56,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
         }
         if (f == o.frames) break;
         if (platform::stop_signal()) return {s->curvature(), s->frame(), true};  // (catch_stop_signals)
-        s->step();
-        s->play_due(player);
+        s->advance(player);
     }
     draw();
     return {s->curvature(), s->frame(), false};

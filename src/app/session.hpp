@@ -4,9 +4,9 @@
 // and the batch commands (render, dump) run a Session, so a key does the same thing
 // everywhere and a recording replays bit for bit. Allocates nothing per frame.
 //
-// Order within a frame: the controls due (queued live input, then the autopilot's), each
-// reported to the recorder with the world time, then one step, then the picture. Scripted
-// events are played by the caller at their time, before the step (ScriptPlayer).
+// Order within a frame (advance): the controls due (queued live input, then the autopilot's),
+// each reported to the recorder with the world time, then one step, then the scripted events
+// due at the new time (ScriptPlayer), then the picture.
 #pragma once
 
 #include <memory>
@@ -62,6 +62,13 @@ public:
     // Plays every event of `player` due by the world time now.
     void play_due(ScriptPlayer& player) {
         while (const ScriptEvent* e = player.next_due(time())) play(*e);
+    }
+    // The one order of a run, for the frame loop, render and dump alike: play_due before the
+    // first step (start), then each frame one step and the events due at the new time (advance).
+    void start(ScriptPlayer& player) { play_due(player); }
+    void advance(ScriptPlayer& player) {
+        step();
+        play_due(player);
     }
     // The queued input, the autopilot, one step of dt.
     virtual void step() = 0;

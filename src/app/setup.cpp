@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "world/budget.hpp"
+#include "world/quote.hpp"
 #include "world/ranges.hpp"
 #include "files/scene_file.hpp"
 
@@ -21,11 +22,8 @@ world::Scene load_scene(const Options& o) {
             std::error_code ec;
             if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos &&
                 !std::filesystem::exists(std::filesystem::symlink_status(o.scene, ec))) {
-                std::string names;
-                for (const char* const* n = world::builtin_scene_names(); *n; ++n)
-                    names += std::string(names.empty() ? "" : ", ") + *n;
                 usage_error("no built-in scene '" + o.scene + "' and no scene file by that name: the built-in scenes are " +
-                            names + ".");
+                            world::or_list(world::builtin_scene_names()) + " ('noneuclid scenes' says what each shows).");
             }
             usage_error(err.to_string());
         }
@@ -61,8 +59,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     rec.setting("hud", o.hud ? "on" : "off");
     rec.setting("legend", o.legend.empty() ? "buttons" : o.legend);
     rec.setting("font", font_setting(font));
-    for (render::PixelFormat f :
-         {render::PixelFormat::xrgb8888(), render::PixelFormat::rgb565(), render::PixelFormat::rgb888()})
+    for (const render::PixelFormat& f : render::kNamedFormats)
         if (f.same_layout(format)) rec.setting("format", f.name);
     if (o.best > 0) rec.setting("best", std::to_string(o.best));
     if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");

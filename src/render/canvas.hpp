@@ -98,6 +98,10 @@ private:
     }
 };
 
+// The formats a user names (render --format, a recording's format, the headless display), in
+// the order --help lists them: the first is the default.
+inline constexpr PixelFormat kNamedFormats[] = {PixelFormat::xrgb8888(), PixelFormat::rgb565(), PixelFormat::rgb888()};
+
 class Canvas {
 public:
     Canvas() = default;

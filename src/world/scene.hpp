@@ -111,8 +111,14 @@ struct SceneParams {
     int tessellation = 8;   // stress
 };
 
-// The names of the built-in scenes, null-terminated.
-const char* const* builtin_scene_names();
+// The built-in scenes (world/scenes.cpp's table): each one's name and what it shows, in one
+// line; and their names alone.
+struct SceneInfo {
+    const char* name;
+    const char* about;
+};
+std::vector<SceneInfo> builtin_scenes();
+std::vector<std::string> builtin_scene_names();
 // Fills `out` with the named built-in scene; false if there is none by that name, or (with
 // `why` set) if the stress scene's parameters ask for more than a world may hold (budget.hpp).
 bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out, std::string* why = nullptr);

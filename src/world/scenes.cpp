@@ -237,12 +237,49 @@ bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb co
     return true;
 }
 
-const char* const* builtin_scene_names() {
-    static const char* const names[] = {"kiosk", "asteroids", "textured", "fig1", "fig14", "fig15", "fig16", "fig17", "stress", nullptr};
-    return names;
+namespace {
+
+// The built-in scenes: name, what it shows (`noneuclid scenes`, --help), and how it is made.
+struct SceneRow {
+    const char* name;
+    const char* about;
+    void (*make)(Scene&, const SceneParams&);
+};
+const SceneRow kScenes[] = {
+    {"kiosk", "the kiosk's: a ship, four drifting bodies and the grid", [](Scene& s, const SceneParams&) { kiosk(s); }},
+    {"asteroids", "the game: Asteroids in curved space, K turning each level", [](Scene& s, const SceneParams&) { asteroids(s); }},
+    {"textured", "textured and filled bodies that bend with K", [](Scene& s, const SceneParams&) { textured(s); }},
+    {"fig1", "the paper's figure 1: a body and its geodesic edges", [](Scene& s, const SceneParams&) { fig1(s); }},
+    {"fig14", "the paper's figure 14: a body moving along a geodesic at 90 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 90); }},
+    {"fig15", "the paper's figure 15: a body moving along a geodesic at 45 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 45); }},
+    {"fig16", "the paper's figure 16: the square at ninety pixels", [](Scene& s, const SceneParams&) { fig16(s); }},
+    {"fig17", "the paper's figure 17: the grid while K sweeps from -1 to +1", [](Scene& s, const SceneParams&) { fig17(s); }},
+    {"stress", "many bodies of many vertices (--bodies, --vertices, --tessellation)", [](Scene& s, const SceneParams& p) { stress(s, p); }},
+};
+
+const SceneRow* find_scene(const std::string& name) {
+    for (const SceneRow& r : kScenes)
+        if (name == r.name) return &r;
+    return nullptr;
+}
+
+}  // namespace
+
+std::vector<SceneInfo> builtin_scenes() {
+    std::vector<SceneInfo> out;
+    for (const SceneRow& r : kScenes) out.push_back({r.name, r.about});
+    return out;
+}
+
+std::vector<std::string> builtin_scene_names() {
+    std::vector<std::string> out;
+    for (const SceneRow& r : kScenes) out.emplace_back(r.name);
+    return out;
 }
 
 bool builtin_scene(const std::string& name, const SceneParams& params, Scene& out, std::string* why) {
+    const SceneRow* row = find_scene(name);
+    if (!row) return false;
     out = Scene{};
     out.name = name;
     std::string over;
@@ -250,16 +287,7 @@ bool builtin_scene(const std::string& name, const SceneParams& params, Scene& ou
         if (why) *why = "the stress scene: " + over;
         return false;
     }
-    if (name == "kiosk") kiosk(out);
-    else if (name == "asteroids") asteroids(out);
-    else if (name == "textured") textured(out);
-    else if (name == "fig1") fig1(out);
-    else if (name == "fig14") geodesic_motion(out, 90);
-    else if (name == "fig15") geodesic_motion(out, 45);
-    else if (name == "fig16") fig16(out);
-    else if (name == "fig17") fig17(out);
-    else if (name == "stress") stress(out, params);
-    else return false;
+    row->make(out, params);
     return true;
 }
 

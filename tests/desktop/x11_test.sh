@@ -53,18 +53,19 @@ wait_app() {  # WHAT: waits for the program started in the background; a failure
     fi
 }
 
-# 1. 600 frames at 60 fps: about 10 s for the keys to arrive, even on a loaded machine.
-timeout 60 "$noneuclid" run --display x11 --scene "$scene" --size 480x360 --frames 600 \
+# 1. 600 frames at 60 fps: about 10 s for the keys to arrive, even on a loaded machine (each
+#    program may take minutes there in a sanitized debug build: the time limits are generous).
+timeout 240 "$noneuclid" run --display x11 --scene "$scene" --size 480x360 --frames 600 \
     --screenshot "$tmp/x11.png" &
 app_pid=$!
 timeout 10 xdotool key --window "$(window)" 1 p
 wait_app "noneuclid run"
-timeout 60 "$noneuclid" render --scene "$scene" --size 480x360 --curvature -1 --projection stereographic \
+timeout 240 "$noneuclid" render --scene "$scene" --size 480x360 --curvature -1 --projection stereographic \
     --hud --legend keys --out "$tmp/render.png"
 "$png_diff" "$tmp/x11.png" "$tmp/render.png" --exact
 
 # 2. Until Esc; the keys as a visitor would press them.
-timeout 60 "$noneuclid" run --display x11 --scene kiosk --size 400x300 --record "$tmp/run.rec" \
+timeout 240 "$noneuclid" run --display x11 --scene kiosk --size 400x300 --record "$tmp/run.rec" \
     --screenshot "$tmp/run.png" &
 app_pid=$!
 win=$(window)
@@ -80,10 +81,10 @@ wait_app "noneuclid run (recording)"
 for want in "press thrust" "release thrust" "press spherical" "tap hud" "legend keys"; do
     grep -q "$want" "$tmp/run.rec" || { echo "x11_test: the recording has no '$want':" >&2; cat "$tmp/run.rec" >&2; exit 1; }
 done
-timeout 60 "$noneuclid" render --actions "$tmp/run.rec" --out "$tmp/replay.png"
+timeout 240 "$noneuclid" render --actions "$tmp/run.rec" --out "$tmp/replay.png"
 "$png_diff" "$tmp/run.png" "$tmp/replay.png" --exact
 grep -v "press thrust" "$tmp/run.rec" > "$tmp/without.rec"
-timeout 60 "$noneuclid" render --actions "$tmp/without.rec" --out "$tmp/without.png"
+timeout 240 "$noneuclid" render --actions "$tmp/without.rec" --out "$tmp/without.png"
 if "$png_diff" "$tmp/run.png" "$tmp/without.png" --exact; then
     echo "x11_test: the replay without the thrust should differ from the run" >&2
     exit 1
@@ -114,5 +115,5 @@ for want in "press fire" "release fire" "scene $game"; do
 done
 "$noneuclid" scores --scores "$tmp/scores" 2>/dev/null | grep -q '^ 1 ' ||
     { echo "x11_test: no game in the high-score table:" >&2; cat "$tmp/scores" >&2; exit 1; }
-timeout 60 "$noneuclid" render --actions "$tmp/game.rec" --out "$tmp/game-replay.png"
+timeout 240 "$noneuclid" render --actions "$tmp/game.rec" --out "$tmp/game-replay.png"
 "$png_diff" "$tmp/game.png" "$tmp/game-replay.png" --exact

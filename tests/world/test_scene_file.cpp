@@ -181,10 +181,10 @@ TEST(Budget, GridsAndTheStressSceneOverItAreRefusedBeforeAnythingIsBuilt) {
     ASSERT_TRUE(builtin_scene("stress", {2000, 64, 8}, stress, &why)) << why;
     EXPECT_TRUE(within_budget(stress, why)) << why;
     // Every built-in scene is well within.
-    for (const char* const* n = builtin_scene_names(); *n; ++n) {
+    for (const std::string& name : builtin_scene_names()) {
         Scene b;
-        ASSERT_TRUE(builtin_scene(*n, {}, b, &why)) << *n;
-        EXPECT_TRUE(within_budget(b, why)) << *n << ": " << why;
+        ASSERT_TRUE(builtin_scene(name, {}, b, &why)) << name;
+        EXPECT_TRUE(within_budget(b, why)) << name << ": " << why;
     }
 }
 

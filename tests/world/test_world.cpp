@@ -272,16 +272,16 @@ TEST(Actions, HyperbolicFlatSphericalSetKOnThePress) {
 // ---- scenes ------------------------------------------------------------------------------------
 
 TEST(Scenes, EveryBuiltInSceneBuildsAndRuns) {
-    for (const char* const* n = builtin_scene_names(); *n; ++n) {
+    for (const std::string& name : builtin_scene_names()) {
         Scene s;
         const SceneParams small{20, 5, 4};
-        ASSERT_TRUE(builtin_scene(*n, small, s)) << *n;
-        EXPECT_FALSE(s.bodies.empty()) << *n;
+        ASSERT_TRUE(builtin_scene(name, small, s)) << name;
+        EXPECT_FALSE(s.bodies.empty()) << name;
         World<fixed> w(s);
         for (int i = 0; i < 30; ++i) w.step(fixed(1.0 / 60));
         std::string out;
         dump_frame(w, {}, out);
-        EXPECT_EQ(out.find("null"), std::string::npos) << *n;  // no NaN, nothing hidden
+        EXPECT_EQ(out.find("null"), std::string::npos) << name;  // no NaN, nothing hidden
     }
     Scene s;
     EXPECT_FALSE(builtin_scene("fig99", {}, s));

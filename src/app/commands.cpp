@@ -1,0 +1,34 @@
+#include "app/commands.hpp"
+
+namespace noneuclid::app {
+
+// In Command's order.
+const CommandRow kCommands[kCommandCount] = {
+    {Command::run, "run",
+     "a scene live: an X11 window when DISPLAY is set, the framebuffer and the board's buttons on a console (the "
+     "kiosk), else the headless display that writes its last frame as a PNG; what options without a command do",
+     run_command},
+    {Command::render, "render", "run a scene and write its last frame as a PNG, or the whole run as an animated GIF",
+     render_command},
+    {Command::dump, "dump", "run a scene and write its state as JSON Lines, one line a frame", dump_command},
+    {Command::demo, "demo",
+     "the kiosk's picture and the paper's figures as PNG files in ./out; what the program does when given nothing",
+     demo_command},
+    {Command::accuracy, "accuracy",
+     "every fixed-point function against std:: double and the engines at the screen, as tables; exit status 1 if a "
+     "row misses its bound",
+     accuracy_command},
+    {Command::buttons, "buttons", "print each press and release of the kiosk's buttons (a wiring check)", buttons_command},
+    {Command::scores, "scores", "print the game's high-score table", scores_command},
+    {Command::scenes, "scenes", "list the built-in scenes, one line each", scenes_command},
+};
+
+const char* command_name(Command c) { return kCommands[static_cast<int>(c)].name; }
+
+bool parse_command(const std::string& name, Command& out) {
+    for (const CommandRow& r : kCommands)
+        if (name == r.name) return out = r.command, true;
+    return false;
+}
+
+}  // namespace noneuclid::app
