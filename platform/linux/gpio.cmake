@@ -101,7 +101,7 @@ else()
                        "(Debian: libgpiod-dev, or libgpiod-dev:<arch> for a cross build)")
     endif()
 endif()
-target_sources(noneuclid_input PRIVATE linux/gpio_common.cpp linux/evdev.cpp linux/input.cpp)
+target_sources(noneuclid_input PRIVATE linux/gpio_common.cpp linux/evdev.cpp linux/input.cpp linux/input_set.cpp)
 target_include_directories(noneuclid_input PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(noneuclid_input PUBLIC noneuclid_files PRIVATE noneuclid_posix noneuclid_warnings)
 # 64-bit directory offsets on 32-bit ARM: readdir() of a large-offset directory (ext4 hashes,

@@ -70,11 +70,13 @@ public:
 std::unique_ptr<InputSource> open_gpio(const GpioConfig& config, std::string& error);
 std::unique_ptr<InputSource> open_evdev(const EvdevConfig& config, std::string& error);
 
-// For `noneuclid buttons` (installers checking their wiring; the system test): polls `src` and
-// prints one line per event to `out`, "press thrust" / "release thrust", flushed at once.
-// Returns 0 after max_events events (0: no limit) or after timeout_seconds (0: none); non-zero,
-// with one sentence on stderr, if polling fails or every device has gone away.
-int print_input_events(InputSource& src, long max_events, double timeout_seconds, std::FILE* out);
+class InputSet;
+// For `noneuclid buttons` (installers checking their wiring; the system test): reads every
+// source of `inputs` (linux/input_set.hpp) and prints one line per event to `out`,
+// "press thrust" / "release thrust", flushed at once. Returns 0 after max_events events (0: no
+// limit) or after timeout_seconds (0: none); non-zero, with one sentence on stderr, if polling
+// fails, a device keeps failing or every device has gone away.
+int print_input_events(InputSet& inputs, long max_events, double timeout_seconds, std::FILE* out);
 
 // Which libgpiod API this build uses ("1.6.3 (v1 API)", "2.1.3 (v2 API)") or "none".
 const char* gpiod_version();

@@ -13,6 +13,8 @@
 #include "buttons.hpp"
 #include "linux/gpio_common.hpp"
 #include "linux/input.hpp"
+#include "linux/input_set.hpp"
+#include "linux/input_set.hpp"
 
 namespace p = noneuclid::platform;
 namespace gd = noneuclid::platform::gpio_detail;
@@ -154,7 +156,8 @@ public:
 
 std::string run_print(p::InputSource& src, long max, double timeout, int& rc) {
     std::FILE* f = std::tmpfile();
-    rc = p::print_input_events(src, max, timeout, f);
+    p::InputSet set({&src});
+    rc = p::print_input_events(set, max, timeout, f);
     std::rewind(f);
     std::string s;
     for (int c; (c = std::fgetc(f)) != EOF;) s += static_cast<char>(c);
