@@ -1,6 +1,7 @@
-// The clock and the process's CPU time (app/platform.hpp), from POSIX.
+// The clock, the process's CPU time and whether stderr is a terminal (app/platform.hpp), from POSIX.
 #include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "app/platform.hpp"
 
@@ -18,5 +19,7 @@ CpuTime cpu_time() {
     auto seconds = [](timeval t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
     return {seconds(u.ru_utime), seconds(u.ru_stime)};
 }
+
+bool stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
 
 }  // namespace noneuclid::platform

@@ -16,6 +16,7 @@ int64_t monotonic_ns() { return static_cast<int64_t>(emscripten_get_now() * 1e6)
 
 // A page cannot ask for its CPU time: --stats reports the wall time alone there.
 CpuTime cpu_time() { return {}; }
+bool stderr_is_terminal() { return false; }
 
 void prepare_process() {}
 

@@ -70,6 +70,31 @@ private:
 };
 }  // namespace
 
+namespace {
+// render's progress on a terminal, for a run long enough to wait for: "frame 1200 of 6000 (20%)",
+// rewritten in place at each whole percent, and cleared at the end.
+class TerminalProgress final : public Progress {
+public:
+    explicit TerminalProgress(bool on) : on_(on) {}
+    ~TerminalProgress() {
+        if (shown_) std::fprintf(stderr, "\r%*s\r", width_, "");
+    }
+    void at(long frame, long frames) override {
+        if (!on_ || frames <= 0) return;
+        const int percent = static_cast<int>(frame * 100 / frames);
+        if (percent == percent_) return;
+        percent_ = percent, shown_ = true;
+        width_ = std::fprintf(stderr, "\rnoneuclid: frame %ld of %ld (%d%%)", frame, frames, percent);
+    }
+
+private:
+    bool on_, shown_ = false;
+    int percent_ = -1, width_ = 0;
+};
+// Long enough to show progress for: a GIF, or over ten seconds of world time.
+bool long_run(const Options& o) { return !o.gif.empty() || o.frames > 600; }
+}  // namespace
+
 int render_command(int argc, char** argv, int first) {
     Script script;
     const Options o = layered_options(argc, argv, first, Command::render, script);
@@ -89,7 +114,11 @@ int render_command(int argc, char** argv, int first) {
     }
     platform::catch_stop_signals();  // a signal leaves --out and --gif as they were (render_picture, write_png, GifWriter)
     Picture picture;
-    const PictureResult r = render_picture(o, scene, &script, font.font, picture, gif.get(), o.gif_every);
+    PictureResult r;
+    {
+        TerminalProgress progress(long_run(o) && platform::stderr_is_terminal());
+        r = render_picture(o, scene, &script, font.font, picture, gif.get(), o.gif_every, &progress);
+    }
     const std::string what = o.out.empty() ? o.gif : o.gif.empty() ? o.out : o.out + " and " + o.gif;
     if (r.stopped) {
         std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames; %s is left as it was.\n",

@@ -18,7 +18,8 @@ void lay_trail(const render::Canvas& trail, const render::Canvas& c, uint32_t ba
 }  // namespace
 
 PictureResult render_picture(const Options& o, const world::Scene& scene, const Script* script,
-                             const render::Font& font, Picture& out, FrameSink* frames, long every) {
+                             const render::Font& font, Picture& out, FrameSink* frames, long every,
+                             Progress* progress) {
     const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(o.width) * o.format.bytes_per_pixel();
     const std::size_t bytes = static_cast<std::size_t>(stride) * static_cast<std::size_t>(o.height);
     out.pixels.assign(bytes, 0);
@@ -57,6 +58,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
         if (f == o.frames) break;
         if (platform::stop_signal()) return {s->curvature(), s->frame(), true};  // (catch_stop_signals)
         s->advance(player);
+        if (progress) progress->at(f + 1, o.frames);
     }
     draw();
     return {s->curvature(), s->frame(), false};

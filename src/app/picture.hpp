@@ -32,10 +32,20 @@ protected:
     ~FrameSink() = default;
 };
 
+// Told how far a run has come, after each step (render's progress line on a terminal).
+class Progress {
+public:
+    virtual void at(long frame, long frames) = 0;
+
+protected:
+    ~Progress() = default;
+};
+
 // Draws into `out` (allocated here: o.width x o.height in o.format). `script` may be null; so may
-// `frames`, which otherwise gets frame 0 and every `every`-th frame after it.
+// `frames`, which otherwise gets frame 0 and every `every`-th frame after it, and `progress`.
 PictureResult render_picture(const Options& o, const world::Scene& scene, const Script* script,
-                             const render::Font& font, Picture& out, FrameSink* frames = nullptr, long every = 1);
+                             const render::Font& font, Picture& out, FrameSink* frames = nullptr, long every = 1,
+                             Progress* progress = nullptr);
 
 // Figure f: its panels side by side (each base.width x base.height, 8 px apart), each its scene
 // at the panel's K (app/figures.hpp) drawn by render_picture with base's engine, format and HUD,

@@ -26,6 +26,8 @@ struct CpuTime {
     double user = 0, system = 0;
 };
 CpuTime cpu_time();
+// Whether standard error is a terminal (where a long run shows its progress).
+bool stderr_is_terminal();
 // At start: a write past the file-size limit (RLIMIT_FSIZE) fails with an error the program
 // reports, instead of SIGXFSZ ending it halfway through a file.
 void prepare_process();
