@@ -35,8 +35,8 @@ endif()
 
 # The fast paths give the same bits as the plain arithmetic; the threaded frame the same pixels
 # as one thread, for every engine.
-add_executable(perf_tests perf/test_division.cpp perf/test_edge_paths.cpp perf/test_fixed_equidistant.cpp
-    perf/test_raster_paths.cpp perf/test_parallel.cpp)
+add_executable(perf_tests fixed/test_division.cpp render/test_edge_paths.cpp render/test_fixed_equidistant.cpp
+    render/test_raster_paths.cpp render/test_parallel.cpp)
 target_link_libraries(perf_tests PRIVATE GTest::gtest_main noneuclid_render noneuclid_warnings Threads::Threads)
 gtest_discover_tests(perf_tests DISCOVERY_TIMEOUT 120 PROPERTIES LABELS perf)
 target_link_libraries(no_alloc_tests PRIVATE Threads::Threads)

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "curve_reference.hpp"
+#include "../render/curve_reference.hpp"
 #include "render/draw_world.hpp"
 #include "world/dump.hpp"
 #include "world/ranges.hpp"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "../render/curve_reference.hpp"
+#include "curve_reference.hpp"
 #include "record.hpp"
 #include "render/draw_world.hpp"
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "desktop/console_font.hpp"
-#include "psf_bytes.hpp"
+#include "../../render/psf_bytes.hpp"
 #include "render/font.hpp"
 
 using namespace noneuclid::render;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The X11 window in a real X server (Xvfb), driven by xdotool:
-#  1. `noneuclid run` on tests/desktop/static.toml (nothing moves), keys 1 (K = -1) and p (the
+#  1. `noneuclid run` on tests/platform/x11/static.toml (nothing moves), keys 1 (K = -1) and p (the
 #     next projection: stereographic), HUD on; the window read back from the X server at exit
 #     (--screenshot, XGetImage) equals, pixel for pixel, `noneuclid render` of the same scene at
 #     K = -1, stereographic, with the HUD and the keys' legend;
@@ -8,7 +8,7 @@
 #     turn, K set by 3, the HUD toggled twice, then Esc; `noneuclid render --actions` of the
 #     recording equals the window's last frame, pixel for pixel; and without the thrust it
 #     differs (the comparison can fail);
-#  3. a whole game in the window (tests/world/data/game.toml: one ship, fast asteroids): Space
+#  3. a whole game in the window (tests/files/data/game.toml: one ship, fast asteroids): Space
 #     starts it, Space held fires while the ship turns and thrusts, until the game is over (the
 #     high-score table is written), then Esc; the replay of the recording equals the window.
 #   x11_test.sh NONEUCLID PNG_DIFF SCENE GAME_SCENE

@@ -3,8 +3,8 @@
 # figures) drawn by the double engine (the reference) at 480x480 without the HUD, which
 # tests/render/test_golden.cpp compares the engines with. Run it only when a change to the
 # drawing is intended, look at the pictures, and commit them with that change.
-#   tests/golden/regenerate.sh [path/to/noneuclid]
+#   tests/render/golden/regenerate.sh [path/to/noneuclid]
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")"
-bin=${1:-../../build/release/noneuclid}
+bin=${1:-../../../build/release/noneuclid}
 "$bin" demo --engine double --size 480x480 --no-hud --out-dir .

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "game_world.hpp"
+#include "../world/game_world.hpp"
 #include "world/dump.hpp"
 #include "world/scene_file.hpp"
 #include "world/world.hpp"

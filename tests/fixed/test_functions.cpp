@@ -1,5 +1,5 @@
 // Special values, domain edges and behaviour outside the domain of the fixed-point functions
-// (the dense accuracy sweeps are in tests/accuracy). References are exact values or std::.
+// (the dense accuracy sweeps are in tests/fixed/test_accuracy.cpp). References are exact values or std::.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -217,7 +217,7 @@ TEST(Kernels, DivisionRoundsExactlyOnBothPaths) {
 // the functions saturate. The tolerance is absolute, kAbs, for results up to 1 in magnitude and
 // relative, kAbs * |reference|, above (the functions round to Q16.16, whose steps are
 // absolute, or compute in relative terms: exp, sinh, cosh, Sf and Cf beyond their tables).
-// kAbs = 1.1e-5: above every absolute and relative figure tests/accuracy asserts (at most
+// kAbs = 1.1e-5: above every absolute and relative figure tests/fixed/test_accuracy.cpp asserts (at most
 // 1.06e-5, Cf on [-40, 40]), below one Q16.16 step (1.53e-5). sqrt and hypot are correctly
 // rounded: half a step. Beyond the accuracy report's domains (|x| up to 32768, u down to
 // -32768) the same tolerance holds: the stride below is what shows it.
