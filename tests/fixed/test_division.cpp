@@ -1,8 +1,8 @@
 // The division kernels compute what the plain arithmetic computes, bit for bit: fx::fixed's
 // operator/ on 32-bit targets (a reciprocal instead of __aeabi_ldivmod) and the per-divisor
 // reciprocal fx::divisor against plain 64-bit integer division, rounded to nearest with ties
-// away from zero, as fixed.hpp specifies; the reciprocal's floor; geo::Fractions<fixed>
-// against T(k) / T(n).
+// away from zero, as fixed.hpp specifies; the reciprocal's floor. (geo::Fractions<fixed>, the
+// same kernels carried along an edge: tests/geometry/test_scalar.cpp.)
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "fixed/math.hpp"
-#include "geometry/geometry.hpp"
 
 namespace {
 
@@ -106,17 +105,6 @@ TEST(FastPaths, FloorDivisionByReciprocal) {
             const uint64_t n = uint64_t{num} << 32;
             ASSERT_EQ(fx::detail::udiv_floor_reciprocal(n, den), n / den) << num << " / " << den;
         }
-}
-
-TEST(FastPaths, FractionsAreTheQuotients) {
-    for (int n = 1; n < 3000; n += (n < 300 ? 1 : 37)) {
-        geo::Fractions<fixed> f(n);
-        for (int k = 1; k < n; ++k) {
-            f.next();
-            ASSERT_EQ(f.t(k).raw(), (fixed(k) / fixed(n)).raw()) << k << "/" << n;
-            ASSERT_EQ(f.u(k).raw(), (fixed(n - k) / fixed(n)).raw()) << n - k << "/" << n;
-        }
-    }
 }
 
 }  // namespace

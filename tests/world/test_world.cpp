@@ -1,6 +1,6 @@
 // The world: physics against the reference model, the limit circle, live curvature and
-// actions, determinism, built-in scenes, the dump. Scene files, input files and the world's
-// budget: test_scene_file.cpp.
+// actions, determinism, built-in scenes. The world's budget: test_budget.cpp; scene files, input
+// files and the dump: tests/files.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -336,32 +336,6 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
         EXPECT_EQ(checked, line->vertices.size()) << "K=" << K << ": the world has the grid line's body, once";
         EXPECT_GE(checked, 3u) << "K=" << K;
     }
-}
-
-// ---- the dump ----------------------------------------------------------------------------------
-
-TEST(Dump, EdgesListTheirPointsEndsIncludedAndScreenMirrorsThem) {
-    Scene s = one_body(0.0, 1.0, 0, 0, 0, 90);
-    s.bodies[0].tessellation = 4;
-    World<double> w(s);
-    std::string out;
-    dump_frame(w, {200, 100, noneuclid::geo::Projection::azimuthal_equidistant}, out);
-    // 3 closed edges of 5 points; screen: R = pi fills 50 px (half the smaller side)
-    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"kind\":\"body\",\"center\":[1,0],\"facing\":90,", 0),
-              0u)
-        << out;
-    EXPECT_NE(out.find("\"travel\":[0,0]"), std::string::npos);
-    const std::size_t edges = out.find("\"edges\":["), screen = out.find("\"screen\":[");
-    ASSERT_NE(edges, std::string::npos);
-    ASSERT_NE(screen, std::string::npos);
-    const std::string e = out.substr(edges, screen - edges), sc = out.substr(screen);
-    EXPECT_EQ(std::count(e.begin(), e.end(), '['), 1 + 3 + 15);   // the list, 3 edges, 15 points
-    EXPECT_EQ(std::count(sc.begin(), sc.end(), '['), 1 + 3 + 15);
-    // the first vertex: centre (1, 0) plus 0.1 north (facing 90) -> x = 100 + 50/pi * 1, y = 50 - 50/pi * 0.1
-    char want[64];
-    std::snprintf(want, sizeof want, "\"screen\":[[[%.9g,%.9g]", 100 + 50 / kPi * 1.0, 50 - 50 / kPi * 0.1);
-    EXPECT_NE(out.find(want), std::string::npos) << out.substr(screen, 80) << " vs " << want;
-    EXPECT_EQ(out.back(), '\n');
 }
 
 }  // namespace
