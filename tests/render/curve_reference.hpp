@@ -26,10 +26,10 @@
 namespace noneuclid::testing {
 
 // How much of the within-one-pixel checks a run does. Whole: every frame and scene the tests
-// name. Under the sanitizers (NONEUCLID_SANITIZED, set by tests/CMakeLists.txt) a check costs
-// ten to twenty times as much and the whole set takes many minutes, so such builds run every
-// `thin()`-th of the sampled frames and scenes (the first and last kept) unless the environment
-// says NONEUCLID_CURVES=whole. The release build runs them whole (platform/debian/run-tests).
+// name. Under the sanitizers (NONEUCLID_SANITIZED, set by noneuclid_optimise_when_sanitized in
+// tests/CMakeLists.txt) a check costs ten to twenty times as much and the whole set takes many
+// minutes, so such builds run every `thin()`-th of the sampled frames and scenes (the first and
+// last kept) unless the environment says NONEUCLID_CURVES=whole. The release build runs them whole (platform/debian/run-tests).
 inline bool curves_whole() {
 #ifdef NONEUCLID_SANITIZED
     const char* e = std::getenv("NONEUCLID_CURVES");
