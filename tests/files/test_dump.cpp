@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numbers>
 #include <string>
 
+#include "test_common.hpp"
 #include "world/dump.hpp"
 #include "world/world.hpp"
 
@@ -15,7 +15,7 @@ using namespace noneuclid::world;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using noneuclid::test::kPi;
 
 TEST(Dump, EdgesListTheirPointsEndsIncludedAndScreenMirrorsThem) {
     // One triangle of vertices 0.1 from its centre at (r 1, theta 0), facing 90 degrees, at

@@ -19,6 +19,7 @@
 
 #include "fixed/accuracy.hpp"
 #include "fixed/math.hpp"
+#include "test_common.hpp"
 
 using noneuclid::fx::AccuracyOptions;
 using noneuclid::fx::AccuracyRow;
@@ -27,7 +28,7 @@ using noneuclid::fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 const std::vector<AccuracyRow>& report() {
     static const std::vector<AccuracyRow> rows = [] {

@@ -2,16 +2,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "fixed/angle.hpp"
+#include "test_common.hpp"
 
 using noneuclid::fx::angle;
 using noneuclid::fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 TEST(Angle, NamedAnglesHaveTheirBits) {
     EXPECT_EQ(angle::from_degrees(90).raw(), angle::quarter_turn);
@@ -50,7 +52,7 @@ TEST(Angle, FromFixedRadiansIsExactToAboutOneUnit) {
     for (int i = 0; i < 50000; ++i) {
         const fixed x = fixed::from_raw(raw(rng));
         const long double units = static_cast<long double>(x.raw()) / 65536.0L *
-                                  (4294967296.0L / (2 * 3.14159265358979323846264338L));
+                                  (4294967296.0L / (2 * std::numbers::pi_v<long double>));
         long double m = std::fmod(units, 4294967296.0L);
         if (m < 0) m += 4294967296.0L;
         const uint32_t got = angle::from_radians(x).raw();

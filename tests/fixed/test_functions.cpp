@@ -7,12 +7,13 @@
 #include <string>
 
 #include "fixed/math.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::fx;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 constexpr double kHalfStep = 0.5 / 65536;
 
 double d(fixed x) { return x.to_double(); }

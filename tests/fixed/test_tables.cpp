@@ -7,12 +7,13 @@
 
 #include "fixed/math.hpp"
 #include "fixed/tables.hpp"
+#include "test_common.hpp"
 
 namespace t = noneuclid::fx::tables;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 // r / S_K(r) as a function of w = C_K(r), from std:: alone.
 double equidistant_ratio(double w) {

@@ -13,12 +13,14 @@
 
 #include "record.hpp"
 #include "render/draw_world.hpp"
+#include "test_common.hpp"
 
 
 namespace {
 
 using namespace noneuclid;
 using fx::fixed;
+using test::kPi;
 
 // The edge loop as it was before the fast path (geometry.hpp, generalised slerp).
 template <class T>
@@ -84,7 +86,7 @@ TEST(FastPaths, WalkEndIsTheEndOfTheWalk) {
             const auto wd = geo::walk(K, pd, static_cast<double>(h), static_cast<double>(b)).end;
             const auto ed = geo::walk_end(K, pd, static_cast<double>(h), static_cast<double>(b));
             ASSERT_NEAR(wd.r, ed.r, 1e-13);
-            ASSERT_NEAR(std::remainder(wd.theta - ed.theta, 2 * 3.14159265358979), 0, 1e-13);
+            ASSERT_NEAR(std::remainder(wd.theta - ed.theta, 2 * kPi), 0, 1e-13);
         }
 }
 

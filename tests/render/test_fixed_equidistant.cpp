@@ -14,12 +14,14 @@
 #include "curve_reference.hpp"
 #include "record.hpp"
 #include "render/draw_world.hpp"
+#include "test_common.hpp"
 
 
 namespace {
 
 using namespace noneuclid;
 using fx::fixed;
+using test::kPi;
 
 // geo::MotionApply<fixed> is M(L) (dot3 per row), bit for bit: on its fast path (entries below
 // 2^14, coordinates anything up to saturated values, sums that saturate) and through its
@@ -91,7 +93,7 @@ TEST(FastPaths, FixedEquidistantPointAgainstDouble) {
     std::mt19937 rng(5);
     for (const double K : {-1.0, -0.6, -0.05, 0.0, 0.3, 1.0})
         for (const auto& size : {std::pair{800, 480}, std::pair{1920, 1080}}) {
-            const double R = K > 0 ? 3.14159265358979 / std::sqrt(K) : 3.2;
+            const double R = K > 0 ? kPi / std::sqrt(K) : 3.2;
             const auto m = render::ScreenMap<fixed>::of(size.first, size.second, fixed(K), fixed(R), geo::Projection::azimuthal_equidistant);
             render::detail::FixedEquidistant fe;
             ASSERT_TRUE(render::detail::FixedEquidistant::make(m, fe));

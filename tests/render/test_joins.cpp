@@ -19,10 +19,14 @@
 
 #include "render/canvas.hpp"
 #include "render/raster.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::render;
 
 namespace {
+
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
 
 constexpr int kW = 160, kH = 120;
 
@@ -36,9 +40,9 @@ double to_segment(double x, double y, SubPoint a, SubPoint b) {
 
 // A polyline of three points from `start` turning by `turn` degrees at the middle one.
 std::vector<SubPoint> bent(double x, double y, double heading_deg, double turn_deg, double length) {
-    const double h = heading_deg * M_PI / 180, t = (heading_deg + 180 - turn_deg) * M_PI / 180;
+    const double h = deg(heading_deg), t = deg(heading_deg + 180 - turn_deg);
     const double mx = x + length * std::cos(h), my = y + length * std::sin(h);
-    return {to_sub(x, y), to_sub(mx, my), to_sub(mx + length * std::cos(t + M_PI), my + length * std::sin(t + M_PI))};
+    return {to_sub(x, y), to_sub(mx, my), to_sub(mx + length * std::cos(t + kPi), my + length * std::sin(t + kPi))};
 }
 
 struct Result {
@@ -112,13 +116,13 @@ TEST(ThinJoins, EveryPointOfAPolylineIsWithinAPixelOfALitPixel) {
         // 2 to 7 points on the canvas, each turning from the last heading by any angle (a fifth
         // of them folding straight back), 0.3 to 25 px apart; open or closed.
         std::vector<SubPoint> pts;
-        double px = 30 + 100 * u(rng), py = 30 + 60 * u(rng), heading = 2 * M_PI * u(rng);
+        double px = 30 + 100 * u(rng), py = 30 + 60 * u(rng), heading = 2 * kPi * u(rng);
         const int n = 2 + static_cast<int>(6 * u(rng));
         pts.push_back(to_sub(px, py));
         for (int i = 1; i < n; ++i) {
             const bool fold = u(rng) < 0.2;
             folds += fold;
-            heading += fold ? M_PI : 2 * M_PI * u(rng) - M_PI;
+            heading += fold ? kPi : 2 * kPi * u(rng) - kPi;
             const double len = 0.3 + 24.7 * u(rng);
             px = std::clamp(px + len * std::cos(heading), 1.0, kW - 1.0);
             py = std::clamp(py + len * std::sin(heading), 1.0, kH - 1.0);

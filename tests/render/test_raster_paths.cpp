@@ -12,16 +12,18 @@
 #include <vector>
 
 #include "render/draw_world.hpp"
+#include "test_common.hpp"
 
 namespace {
 
 using namespace noneuclid;
 using fx::fixed;
+using test::kPi;
 
 TEST(FastPaths, BackdropSpansAreClearPlusShade) {
     for (render::PixelFormat f : {render::PixelFormat::rgb565(), render::PixelFormat::xrgb8888(), render::PixelFormat::rgb888()})
         for (auto [w, h] : {std::pair{800, 480}, std::pair{33, 97}, std::pair{1, 1}, std::pair{480, 480}, std::pair{101, 40}})
-            for (double R : {3.14159265358979, 1.0, 0.3})
+            for (double R : {kPi, 1.0, 0.3})
                 for (bool shade : {true, false}) {
                     const std::size_t stride = static_cast<std::size_t>(w * f.bytes_per_pixel() + 8);
                     std::vector<uint8_t> x(stride * static_cast<std::size_t>(h), 0xAB), y = x;

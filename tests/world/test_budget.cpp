@@ -3,9 +3,9 @@
 // it, named with its place: tests/files/test_scene_file.cpp.)
 #include <gtest/gtest.h>
 
-#include <numbers>
 #include <string>
 
+#include "test_common.hpp"
 #include "world/budget.hpp"
 #include "world/scene.hpp"
 
@@ -13,7 +13,7 @@ using namespace noneuclid::world;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using noneuclid::test::kPi;
 
 // Values each within their range can multiply past what a world may hold: refused with a
 // sentence, before anything is allocated, whatever the product (here up to 4e13 vertices).

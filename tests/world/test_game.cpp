@@ -11,6 +11,7 @@
 
 #include "game_world.hpp"
 #include "geometry/reference.hpp"
+#include "test_common.hpp"
 #include "world/dump.hpp"
 #include "world/world.hpp"
 
@@ -23,7 +24,7 @@ namespace ref = noneuclid::geo::ref;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 template <class W>
 int ship_index(const W& w) {

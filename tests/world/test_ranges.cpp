@@ -18,6 +18,7 @@
 
 #include "../render/curve_reference.hpp"
 #include "render/draw_world.hpp"
+#include "test_common.hpp"
 #include "world/dump.hpp"
 #include "world/ranges.hpp"
 #include "world/scene_file.hpp"
@@ -30,7 +31,7 @@ using world::Ranges;
 
 using testing::kGapPx;
 using testing::kWithinPx;
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 // A scene drawn from the accepted ranges, every body within them (body_within_ranges), so that
 // the largest values occur: a body's reach up to 2 pi, speeds up to the ceiling.

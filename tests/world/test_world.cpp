@@ -10,6 +10,7 @@
 #include <string>
 
 #include "geometry/reference.hpp"
+#include "test_common.hpp"
 #include "world/dump.hpp"
 #include "world/world.hpp"
 
@@ -21,17 +22,11 @@ namespace ref = noneuclid::geo::ref;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-double angle_diff(double a, double b) { return std::fabs(std::remainder(a - b, 2 * kPi)); }
-double plane_distance(Polar<double> a, Polar<double> b) {
-    return std::hypot(a.r * std::cos(a.theta) - b.r * std::cos(b.theta), a.r * std::sin(a.theta) - b.r * std::sin(b.theta));
-}
-template <class T>
-Polar<double> D(Polar<T> p) {
-    return {static_cast<double>(p.r), static_cast<double>(p.theta)};
-}
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
+using noneuclid::test::angle_diff;
+using noneuclid::test::plane_distance;
+using noneuclid::test::D;
 
 Scene one_body(double K, double r, double theta_deg, double speed, double dir_deg, double facing_deg = 10,
                double R = kPi) {
@@ -120,7 +115,7 @@ TEST(Physics, ThrustAcceleratesAlongTheFacingAndSpinTurns) {
     w.press(Action::turn_left);
     for (int i = 0; i < 60; ++i) w.step(1.0 / 60);
     EXPECT_NEAR(w.bodies[0].speed, 0.6, 1e-12);  // turning does not change the velocity
-    EXPECT_NEAR(angle_diff(w.bodies[0].facing, kPi / 2 + s.turn_rate_deg * kDeg), 0, 1e-9);
+    EXPECT_NEAR(angle_diff(w.bodies[0].facing, kPi / 2 + deg(s.turn_rate_deg)), 0, 1e-9);
 }
 
 // ---- the limit circle ------------------------------------------------------------------------
@@ -166,8 +161,8 @@ TEST(LimitCircle, OnTheSphereTheRuleIsTheGeodesicThroughTheAntipode) {
         }
         // Past the antipode: opposite side, radius 2R - (R - 0.2 + 0.5) = R - 0.3, travel unchanged.
         EXPECT_NEAR(w.bodies[0].centre.r, R - 0.3, 1e-9);
-        EXPECT_NEAR(angle_diff(w.bodies[0].centre.theta, (40 + 180) * kDeg), 0, 1e-9);
-        EXPECT_NEAR(angle_diff(w.bodies[0].travel, 40 * kDeg), 0, 1e-9);
+        EXPECT_NEAR(angle_diff(w.bodies[0].centre.theta, deg(40 + 180)), 0, 1e-9);
+        EXPECT_NEAR(angle_diff(w.bodies[0].travel, deg(40)), 0, 1e-9);
     }
 }
 

@@ -8,13 +8,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
-#include "desktop/console_font.hpp"
 #include "../../render/psf_bytes.hpp"
+#include "desktop/console_font.hpp"
 #include "render/font.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::render;
 using namespace noneuclid::test;
@@ -25,22 +25,6 @@ namespace fs = std::filesystem;
 using noneuclid::platform::default_hud_font;
 using noneuclid::platform::load_console_font;
 using noneuclid::platform::LoadedFont;
-
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = fs::temp_directory_path()
-               / ("noneuclid-font-" + std::string(info->name()) + "-"
-                  + std::to_string(std::random_device{}()));
-        fs::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
 
 void write_gz(const std::string& path, const std::vector<uint8_t>& bytes) {
     gzFile f = gzopen(path.c_str(), "wb");

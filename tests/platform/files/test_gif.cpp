@@ -3,8 +3,6 @@
 // nothing; a writer dropped unfinished or stopped leaves the target as it was.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -13,10 +11,13 @@
 
 #include "app/platform.hpp"
 #include "render/canvas.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid;
 
 namespace {
+
+using test::TempDir;
 
 constexpr int kW = 64, kH = 48;
 
@@ -36,11 +37,6 @@ std::string rgb_of(const render::Canvas& c) {
         }
     return out;
 }
-std::filesystem::path temp_dir() {
-    const auto d = std::filesystem::temp_directory_path() / ("noneuclid_gif_" + std::to_string(getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-}
 // Files in d other than `except`.
 int others(const std::filesystem::path& d, const std::string& except) {
     int n = 0;
@@ -49,7 +45,8 @@ int others(const std::filesystem::path& d, const std::string& except) {
 }
 
 TEST(Gif, FramesAndDelaysReadBackExactly) {
-    const auto dir = temp_dir();
+    const TempDir tmp;
+    const auto& dir = tmp.path;
     const std::string path = (dir / "a.gif").string();
     std::vector<uint32_t> px(kW * kH);
     const render::Canvas c(reinterpret_cast<uint8_t*>(px.data()), kW, kH, kW * 4, render::PixelFormat::xrgb8888());
@@ -76,7 +73,6 @@ TEST(Gif, FramesAndDelaysReadBackExactly) {
         EXPECT_EQ(frames[static_cast<std::size_t>(k)].centiseconds, delays[k]) << "frame " << k;
     }
     EXPECT_EQ(others(dir, "a.gif"), 0);  // no temporary file left
-    std::filesystem::remove_all(dir);
 }
 
 TEST(Gif, AMissingDirectoryIsOneSentenceAndLeavesNothing) {
@@ -87,7 +83,8 @@ TEST(Gif, AMissingDirectoryIsOneSentenceAndLeavesNothing) {
 }
 
 TEST(Gif, AWriterDroppedUnfinishedLeavesTheOldFile) {
-    const auto dir = temp_dir();
+    const TempDir tmp;
+    const auto& dir = tmp.path;
     const std::string path = (dir / "b.gif").string();
     { std::ofstream(path) << "the earlier file"; }
     std::vector<uint32_t> px(kW * kH);
@@ -104,7 +101,6 @@ TEST(Gif, AWriterDroppedUnfinishedLeavesTheOldFile) {
     std::getline(in, text);
     EXPECT_EQ(text, "the earlier file");
     EXPECT_EQ(others(dir, "b.gif"), 0);
-    std::filesystem::remove_all(dir);
 }
 
 }  // namespace
