@@ -1,5 +1,6 @@
-// What many tests share: pi, degrees, angles compared on the circle, the flat picture's distance
-// of two polar points, a polar point of any engine in double, and a directory of a test's own.
+// What many tests share: pi, the fixed-point step, degrees, angles compared on the circle, the
+// flat picture's distance of two polar points, a polar point of any engine in double, and a
+// directory of a test's own.
 // Every GoogleTest executable has tests/common on its include path (noneuclid_gtest).
 #pragma once
 
@@ -15,6 +16,10 @@
 namespace noneuclid::test {
 
 inline constexpr double kPi = std::numbers::pi;
+
+// One step of fx::fixed (Q16.16), and half of it: the error of a correctly rounded result.
+inline constexpr double kStep = 1.0 / 65536;
+inline constexpr double kHalfStep = kStep / 2;
 
 // Degrees to radians.
 constexpr double deg(double degrees) { return degrees * (kPi / 180); }

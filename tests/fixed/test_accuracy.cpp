@@ -56,7 +56,7 @@ struct Bound {
     double floor, abs, rel;
 };
 // Half a Q16.16 step, 2^-17 = 7.6294e-6: what a correctly rounded result reaches (sqrt).
-constexpr double kHalfStep = 0.5 / 65536;
+using noneuclid::test::kHalfStep;
 const Bound kBounds[] = {
     {"sin(angle)", "[-pi, pi)", 0, 8.88e-6, 0},                 // 8.784e-6
     {"cos(angle)", "[-pi, pi)", 0, 8.88e-6, 0},                 // 8.784e-6

@@ -9,13 +9,14 @@
 
 #include "fixed/fixed.hpp"
 #include "fixed/math.hpp"
+#include "test_common.hpp"
 
 using noneuclid::fx::fixed;
 using noneuclid::fx::unit;
 
 namespace {
 
-constexpr double kStep = 1.0 / 65536;  // one Q16.16 step
+using noneuclid::test::kStep;
 
 TEST(Fixed, ConvertsFromDoubleRoundingToNearest) {
     EXPECT_EQ(fixed(1.5).raw(), 98304);  // 1.5 * 2^16
