@@ -112,7 +112,7 @@ target_compile_definitions(noneuclid_input PUBLIC _FILE_OFFSET_BITS=64)
 # The system test's proof that read() allocates nothing (tests/system/input.sh): statically
 # linked, malloc and friends wrapped. Built on request only (tests/system/input-test does).
 if(noneuclid_gpiod_static)
-    add_executable(input_alloc_probe EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/tests/input/alloc_probe.cpp)
+    add_executable(input_alloc_probe EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/tests/platform/linux/alloc_probe.cpp)
     target_link_libraries(input_alloc_probe PRIVATE noneuclid_input noneuclid_warnings)
     target_link_options(input_alloc_probe PRIVATE
         -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc,--wrap=free)

@@ -283,7 +283,7 @@ TEST(Recording, DrawnOnThreadsReplaysPixelExact) {
 // dump has the hits, the crash and the end.
 TEST(Recording, AWholeGameReplaysPixelExact) {
     app::Options o = app::defaults(app::Command::run);
-    o.scene = std::string(NONEUCLID_SOURCE_DIR) + "/tests/world/data/game.toml";
+    o.scene = std::string(NONEUCLID_SOURCE_DIR) + "/tests/files/data/game.toml";
     o.frames = 1500, o.attract = 3, o.hud = true;
     o.scores = "none";
     const std::vector<Key> keys = {{10, Control::fire, true},   {12, Control::fire, false},  {40, Control::fire, true},

@@ -4,7 +4,7 @@
 // WorkerPool of 1, 2 and 4 threads (started once, before timing: the bodies' geometry and the
 // raster bands on the pool), for stress (200 bodies x 8 vertices x level 8, K = -1) and kiosk,
 // at 800x480 RGB565 and 1920x1080 XRGB8888, fixed and double engines. The world and the pixels
-// are the same in every case, bit for bit (tests/perf/test_parallel).
+// are the same in every case, bit for bit (tests/render/test_parallel.cpp).
 // Wall-clock time (UseRealTime): the threads' CPU time is not the caller's. The summary also
 // shows how the work was split: the calling thread's CPU time (Google Benchmark's CPU column)
 // and the whole process's (std::clock, every thread): on a machine whose other core is busy

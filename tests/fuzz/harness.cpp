@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numbers>
 #include <string>
 #include <toml++/toml.h>
 
@@ -65,7 +66,7 @@ double grid_vertices(std::string_view text) {
         if (auto i = n->as_integer()) return static_cast<double>(i->get());
         return std::nan("");
     };
-    const double R = number(root.get("limit_radius"), 3.14159265358979323846);
+    const double R = number(root.get("limit_radius"), std::numbers::pi);
     if (!in(R, 1e-3, 1e4)) return 0;
     const toml::array* grids = root.get("grid") ? root.get("grid")->as_array() : nullptr;
     if (!grids) return 0;

@@ -60,7 +60,7 @@ TEST(FuzzRegressions, World) { replay_all("world", 0); }
 // The scene and board harnesses on the project's own files: the examples, the boards.
 TEST(FuzzRegressions, TheProjectsFilesAsSeeds) {
     const fs::path source = NONEUCLID_SOURCE_DIR;
-    EXPECT_GT(replay(harness("scene"), source / "tests/world/data"), 0);
+    EXPECT_GT(replay(harness("scene"), source / "tests/files/data"), 0);
     EXPECT_GT(replay(harness("board"), source / "boards"), 0);
 }
 

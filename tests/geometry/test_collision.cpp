@@ -19,6 +19,7 @@
 #include "chart_reference.hpp"
 #include "geometry/collision.hpp"
 #include "geometry/reference.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid;
 using geo::Polar;
@@ -27,7 +28,8 @@ using fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
 const double kCurvatures[] = {-1, -0.3, 0, 0.3, 1};
 // The fixed engine's tolerance, world units. Within 2.5 of O, or at K > -0.6, no answer was
 // found wrong beyond 1e-3 (sampled at 2e-5 to 8e-3 from outlines of 0.15 to 0.45); nearer the
@@ -261,7 +263,7 @@ TEST(Collision, PolygonsTouchingTipToEdge) {
                     ship.centre = centre;
                     ship.facing = geo::ref::bearing(K, centre, tip);
                     const double rho = geo::ref::distance(K, centre, tip);
-                    ship.local = {{rho, 0}, {rho, 140 * kPi / 180}, {rho, 220 * kPi / 180}};
+                    ship.local = {{rho, 0}, {rho, deg(140)}, {rho, deg(220)}};
                     const bool truth = delta < 0;
                     const Vecs<double> da = engine<double>(K, a), ds = engine<double>(K, ship);
                     EXPECT_EQ(geo::polygons_overlap(da.c, da.v.data(), da.v.size(), ds.c, ds.v.data(), ds.v.size()), truth)

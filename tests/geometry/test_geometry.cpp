@@ -14,27 +14,19 @@
 #include "geometry/geometry.hpp"
 #include "geometry/paper.hpp"
 #include "geometry/reference.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::geo;
 using noneuclid::fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
+using noneuclid::test::angle_diff;
+using noneuclid::test::plane_distance;
+using noneuclid::test::D;
 const double kKs[] = {-1, -0.5, -1e-4, -1e-9, 0, 1e-9, 1e-4, 0.5, 1};
 
-// Distance between two polar points in the flat picture (azimuthal equidistant): what the
-// screen shows, and well defined at r = 0 where theta is not.
-double plane_distance(Polar<double> a, Polar<double> b) {
-    return std::hypot(a.r * std::cos(a.theta) - b.r * std::cos(b.theta),
-                      a.r * std::sin(a.theta) - b.r * std::sin(b.theta));
-}
-double angle_diff(double a, double b) { return std::fabs(std::remainder(a - b, 2 * kPi)); }
-
-template <class T>
-Polar<double> D(Polar<T> p) {
-    return {static_cast<double>(p.r), static_cast<double>(p.theta)};
-}
 template <class T>
 Polar<T> P(Polar<double> p) {
     return {T(p.r), T(p.theta)};

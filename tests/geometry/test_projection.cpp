@@ -10,13 +10,14 @@
 #include "geometry/accuracy.hpp"
 #include "geometry/geometry.hpp"
 #include "geometry/screen.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::geo;
 using noneuclid::fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 // ---- projections ----------------------------------------------------------------------------
 

@@ -1,4 +1,4 @@
-// The test image of fill_tests: texel (x, y) of a 64 x 64 image holds its own coordinates (red
+// The test image of the fill tests: texel (x, y) of a 64 x 64 image holds its own coordinates (red
 // 4 x, green 4 y, blue 0x80), so a drawn pixel says which texel it was read from.
 #pragma once
 

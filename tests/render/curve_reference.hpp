@@ -22,14 +22,16 @@
 
 #include "geometry/reference.hpp"
 #include "render/draw_world.hpp"
+#include "test_common.hpp"
 
 namespace noneuclid::testing {
 
 // How much of the within-one-pixel checks a run does. Whole: every frame and scene the tests
-// name. Under the sanitizers (NONEUCLID_SANITIZED, set by tests/CMakeLists.txt) a check costs
-// ten to twenty times as much and the whole set takes many minutes, so such builds run every
-// `thin()`-th of the sampled frames and scenes (the first and last kept) unless the environment
-// says NONEUCLID_CURVES=whole. The release build runs them whole (platform/debian/run-tests).
+// name. Under the sanitizers (NONEUCLID_SANITIZED, set by noneuclid_optimise_when_sanitized in
+// tests/CMakeLists.txt) a check costs ten to twenty times as much and the whole set takes many
+// minutes, so such builds run every `thin()`-th of the sampled frames and scenes (the first and
+// last kept) unless the environment says NONEUCLID_CURVES=whole. The release build runs them
+// whole (platform/debian/run-tests).
 inline bool curves_whole() {
 #ifdef NONEUCLID_SANITIZED
     const char* e = std::getenv("NONEUCLID_CURVES");
@@ -61,7 +63,7 @@ struct CurveCheck {
 class ReferenceView {
 public:
     ReferenceView(double K, double R, geo::Projection p, int width, int height) : K_(K), p_(p) {
-        constexpr double pi = 3.14159265358979323846;
+        constexpr double pi = test::kPi;
         const double s = std::sqrt(std::fabs(K));
         double shown = R;
         if (K > 0) {
@@ -79,7 +81,7 @@ public:
     }
     // rho of a point at distance r; false where the view does not show it.
     double rho(double r, bool& visible) const {
-        constexpr double pi = 3.14159265358979323846;
+        constexpr double pi = test::kPi;
         const double s = std::sqrt(std::fabs(K_)), x = s * r;
         visible = true;
         if (K_ == 0) return r;
@@ -133,7 +135,7 @@ struct Sample {
 // the chord tolerance of the curve, but the curve itself may be outside the clip circle there.
 inline void edge_samples(double K, const ReferenceView& v, geo::Polar<double> p, geo::Polar<double> q,
                          std::vector<Sample>& out) {
-    constexpr double pi = 3.14159265358979323846;
+    constexpr double pi = test::kPi;
     const glm::dvec3 rel = geo::ref::frame_inverse(K, p) * geo::ref::point(K, q);
     const double d = geo::ref::polar(K, rel).r;
     // Antipodal ends: the geodesic through p's radial line (q's when p is O), the convention.

@@ -23,6 +23,7 @@
 #include "geometry/reference.hpp"
 #include "render/draw_world.hpp"
 #include "render/parallel_frame.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid;
 using geo::Polar;
@@ -30,7 +31,8 @@ using fx::fixed;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
 const double kCurvatures[] = {-1, -0.3, 0, 0.3, 1};
 constexpr int kW = 400, kH = 400;
 
@@ -48,13 +50,13 @@ Shape star_shape() {  // an asteroid: star-shaped about its centre
 }
 Shape c_shape() {  // a thick C: its centre lies outside it, so it is not star-shaped about it
     Shape s{"C", {}};
-    for (double phi : {40, 90, 140, 180, 220, 270, 320}) s.local.push_back({0.4, phi * kPi / 180});
-    for (double phi : {300, 240, 180, 120, 60}) s.local.push_back({0.2, phi * kPi / 180});
+    for (double phi : {40, 90, 140, 180, 220, 270, 320}) s.local.push_back({0.4, deg(phi)});
+    for (double phi : {300, 240, 180, 120, 60}) s.local.push_back({0.2, deg(phi)});
     return s;
 }
 Shape bowtie_shape() {  // its edges cross: even-odd
     Shape s{"bowtie", {}};
-    for (double phi : {30, 150, 210, 330}) s.local.push_back({0.35, phi * kPi / 180});
+    for (double phi : {30, 150, 210, 330}) s.local.push_back({0.35, deg(phi)});
     return s;
 }
 
@@ -111,8 +113,8 @@ struct Reference {
         from_local = geo::ref::frame(K, centre()) * geo::ref::Rot(facing());
         for (const Polar<double>& v : shape.local) poly.push_back({TK(K, v.r) * std::cos(v.theta), TK(K, v.r) * std::sin(v.theta)});
     }
-    Polar<double> centre() const { return {place.r, place.theta_deg * kPi / 180}; }
-    double facing() const { return place.facing_deg * kPi / 180; }
+    Polar<double> centre() const { return {place.r, deg(place.theta_deg)}; }
+    double facing() const { return deg(place.facing_deg); }
     // The point at chart coordinates (u, v).
     Polar<double> from_chart(double u, double v) const {
         const double w = 1 / std::sqrt(1 + K * (u * u + v * v));
@@ -415,8 +417,8 @@ TEST(FillGeometry, UnprojectInvertsEachProjection) {
 TEST(FillGeometry, TheInverseMotionUndoesTheMotion) {
     for (double K : kCurvatures)
         for (Place p : kPlaces) {
-            const Polar<double> c{p.r, p.theta_deg * kPi / 180};
-            const double f = p.facing_deg * kPi / 180;
+            const Polar<double> c{p.r, deg(p.theta_deg)};
+            const double f = deg(p.facing_deg);
             const geo::Motion<double> M = geo::body_motion(K, c, f), Mi = geo::body_motion_inverse(K, c, f);
             const geo::Vec3<double> v = geo::to_vec(K, Polar<double>{0.7, 1.1}), back = Mi(M(v));
             EXPECT_NEAR(back.w, v.w, 1e-12);

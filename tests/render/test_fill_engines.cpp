@@ -16,7 +16,7 @@ using namespace noneuclid;
 
 namespace {
 
-constexpr int kW = 400, kH = 400;
+constexpr int kEnginesW = 400, kEnginesH = 400;
 
 using test::coordinate_image;
 
@@ -39,15 +39,15 @@ std::vector<render::Rgb> textured(const world::Scene& sc) {
     world::World<T> w(sc);
     render::DrawScratch<T> s;
     s.prepare(w);
-    std::vector<uint8_t> px(kW * kH * 4, 0);
-    const render::Canvas c{px.data(), kW, kH, kW * 4, render::PixelFormat::xrgb8888()};
+    std::vector<uint8_t> px(kEnginesW * kEnginesH * 4, 0);
+    const render::Canvas c{px.data(), kEnginesW, kEnginesH, kEnginesW * 4, render::PixelFormat::xrgb8888()};
     const render::DrawOptions o;
     s.fill.begin_frame(c);
-    if (const render::FillJob* j = s.fill.plan(w, 0, render::ScreenMap<T>::of(c, w.K, w.R, o.projection), o, kW, kH))
-        render::fill_rows(c, *j, 0, kH, s.fill.work[0]);
+    if (const render::FillJob* j = s.fill.plan(w, 0, render::ScreenMap<T>::of(c, w.K, w.R, o.projection), o, kEnginesW, kEnginesH))
+        render::fill_rows(c, *j, 0, kEnginesH, s.fill.work[0]);
     std::vector<render::Rgb> out;
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) out.push_back(c.get(x, y));
+    for (int y = 0; y < kEnginesH; ++y)
+        for (int x = 0; x < kEnginesW; ++x) out.push_back(c.get(x, y));
     return out;
 }
 

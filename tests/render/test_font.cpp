@@ -29,19 +29,19 @@ std::string parse_error(const std::vector<uint8_t>& bytes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Guarded canvases
+// PatternCanvas canvases
 // ---------------------------------------------------------------------------------------------
 
 // A buffer with a canary border: 3 canary rows above and below, 3 canary pixels left and right
 // of each row and an odd number of spare bytes ending each row. The canary bytes and the
 // canvas's own starting content are patterns, so that any stray or missing write shows.
-struct Guarded {
+struct PatternCanvas {
     static constexpr int kPad = 3;
     int w, h;
     PixelFormat f;
     std::ptrdiff_t stride;
     std::vector<uint8_t> bytes, original;
-    Guarded(int w_, int h_, PixelFormat f_) : w(w_), h(h_), f(f_) {
+    PatternCanvas(int w_, int h_, PixelFormat f_) : w(w_), h(h_), f(f_) {
         stride = std::ptrdiff_t((w + 2 * kPad) * f.bytes_per_pixel() + 5);
         bytes.resize(std::size_t(stride * (h + 2 * kPad)));
         for (std::size_t i = 0; i < bytes.size(); ++i)
@@ -376,7 +376,7 @@ TEST(FontDraw, ClippedAndExactInEveryFormat) {
                                  + "x" + std::to_string(font->height) + " scale "
                                  + std::to_string(scale) + " at " + std::to_string(xs) + ","
                                  + std::to_string(ys));
-                    Guarded g(W, H, fmt);
+                    PatternCanvas g(W, H, fmt);
                     const int returned =
                         draw_text(g.canvas(), *font, int(xs), int(ys), text, kColor, scale);
                     EXPECT_EQ(returned,
@@ -409,7 +409,7 @@ TEST(FontDraw, ClippedAndExactInEveryFormat) {
 TEST(FontDraw, EmptyCanvasAndEmptyFont) {
     Canvas none;
     EXPECT_EQ(draw_text(none, builtin_font(), 0, 0, "abc", kColor), 18);
-    Guarded g(8, 8, PixelFormat::xrgb8888());
+    PatternCanvas g(8, 8, PixelFormat::xrgb8888());
     EXPECT_EQ(draw_text(g.canvas(), Font{}, 0, 0, "abc", kColor), 0);
     EXPECT_EQ(g.bytes, g.original);
 }

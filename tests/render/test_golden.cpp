@@ -1,6 +1,6 @@
 // Golden images of the paper's figures (app/figures.hpp: the table the demo draws). The goldens
-// in tests/golden/ are the demo's pictures by the double engine at 480x480 without the HUD
-// (tests/golden/regenerate.sh), drawn here by the same path (app::render_figure: a figure's
+// in tests/render/golden/ are the demo's pictures by the double engine at 480x480 without the HUD
+// (tests/render/golden/regenerate.sh), drawn here by the same path (app::render_figure: a figure's
 // panels side by side, each 480x480). Two
 // comparisons, pixel by pixel:
 //  - the double engine today against its golden: the same picture, up to 0.05% of the pixels

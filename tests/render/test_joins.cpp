@@ -19,12 +19,16 @@
 
 #include "render/canvas.hpp"
 #include "render/raster.hpp"
+#include "test_common.hpp"
 
 using namespace noneuclid::render;
 
 namespace {
 
-constexpr int kW = 160, kH = 120;
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
+
+constexpr int kJoinsW = 160, kJoinsH = 120;
 
 // The distance from (x, y) to the segment a-b, px.
 double to_segment(double x, double y, SubPoint a, SubPoint b) {
@@ -36,23 +40,23 @@ double to_segment(double x, double y, SubPoint a, SubPoint b) {
 
 // A polyline of three points from `start` turning by `turn` degrees at the middle one.
 std::vector<SubPoint> bent(double x, double y, double heading_deg, double turn_deg, double length) {
-    const double h = heading_deg * M_PI / 180, t = (heading_deg + 180 - turn_deg) * M_PI / 180;
+    const double h = deg(heading_deg), t = deg(heading_deg + 180 - turn_deg);
     const double mx = x + length * std::cos(h), my = y + length * std::sin(h);
-    return {to_sub(x, y), to_sub(mx, my), to_sub(mx + length * std::cos(t + M_PI), my + length * std::sin(t + M_PI))};
+    return {to_sub(x, y), to_sub(mx, my), to_sub(mx + length * std::cos(t + kPi), my + length * std::sin(t + kPi))};
 }
 
 struct Result {
     long inside = 0, missed = 0, extra = 0, join = 0;
 };
 Result check(const std::vector<SubPoint>& pts, double width, RowRange rows = {}) {
-    std::vector<uint32_t> px(kW * kH, 0);
-    const Canvas c(px.data(), kW, kH, kW * 4, PixelFormat::xrgb8888());
+    std::vector<uint32_t> px(kJoinsW * kJoinsH, 0);
+    const Canvas c(px.data(), kJoinsW, kJoinsH, kJoinsW * 4, PixelFormat::xrgb8888());
     draw_polyline(c, pts.data(), static_cast<int>(pts.size()), false, {255, 255, 255},
                   {false, static_cast<int32_t>(width * 256)}, rows);
     Result r;
     const double half = width / 2;
-    for (int y = std::max(rows.y0, 0); y < std::min(rows.y1, kH); ++y)
-        for (int x = 0; x < kW; ++x) {
+    for (int y = std::max(rows.y0, 0); y < std::min(rows.y1, kJoinsH); ++y)
+        for (int x = 0; x < kJoinsW; ++x) {
             double d = 1e9, dj = 1e9;
             for (std::size_t i = 0; i + 1 < pts.size(); ++i) d = std::min(d, to_segment(x + 0.5, y + 0.5, pts[i], pts[i + 1]));
             for (std::size_t i = 1; i + 1 < pts.size(); ++i)
@@ -61,7 +65,7 @@ Result check(const std::vector<SubPoint>& pts, double width, RowRange rows = {})
             // it grown by its width and 2 px, its new end rounded to 1/256 px, which may turn it
             // by as much on the canvas.
             if (std::fabs(d - half) < 0.02) continue;
-            const bool lit = px[static_cast<std::size_t>(y) * kW + x] != 0, in = d < half;
+            const bool lit = px[static_cast<std::size_t>(y) * kJoinsW + x] != 0, in = d < half;
             r.inside += in, r.join += in && dj < width;
             r.missed += in && !lit, r.extra += lit && !in;
         }
@@ -86,7 +90,7 @@ TEST(ThickJoins, EveryPixelWithinHalfTheWidthOfASegmentIsLitAndNoOther) {
 
 TEST(ThickJoins, RandomPolylinesWholeAndInRowBands) {
     std::mt19937 rng(23);
-    std::uniform_real_distribution<double> x(-10, kW + 10), y(-10, kH + 10), w(1.2, 12);
+    std::uniform_real_distribution<double> x(-10, kJoinsW + 10), y(-10, kJoinsH + 10), w(1.2, 12);
     for (int k = 0; k < 300; ++k) {
         std::vector<SubPoint> pts;
         for (int i = 0; i < 6; ++i) pts.push_back(to_sub(x(rng), y(rng)));
@@ -94,7 +98,7 @@ TEST(ThickJoins, RandomPolylinesWholeAndInRowBands) {
         const Result whole = check(pts, width);
         EXPECT_EQ(whole.missed, 0) << k;
         EXPECT_EQ(whole.extra, 0) << k;
-        const int y0 = static_cast<int>(rng() % kH);
+        const int y0 = static_cast<int>(rng() % kJoinsH);
         const Result band = check(pts, width, {y0, y0 + 1 + static_cast<int>(rng() % 20)});
         EXPECT_EQ(band.missed, 0) << k << " band at " << y0;
         EXPECT_EQ(band.extra, 0) << k << " band at " << y0;
@@ -112,21 +116,21 @@ TEST(ThinJoins, EveryPointOfAPolylineIsWithinAPixelOfALitPixel) {
         // 2 to 7 points on the canvas, each turning from the last heading by any angle (a fifth
         // of them folding straight back), 0.3 to 25 px apart; open or closed.
         std::vector<SubPoint> pts;
-        double px = 30 + 100 * u(rng), py = 30 + 60 * u(rng), heading = 2 * M_PI * u(rng);
+        double px = 30 + 100 * u(rng), py = 30 + 60 * u(rng), heading = 2 * kPi * u(rng);
         const int n = 2 + static_cast<int>(6 * u(rng));
         pts.push_back(to_sub(px, py));
         for (int i = 1; i < n; ++i) {
             const bool fold = u(rng) < 0.2;
             folds += fold;
-            heading += fold ? M_PI : 2 * M_PI * u(rng) - M_PI;
+            heading += fold ? kPi : 2 * kPi * u(rng) - kPi;
             const double len = 0.3 + 24.7 * u(rng);
-            px = std::clamp(px + len * std::cos(heading), 1.0, kW - 1.0);
-            py = std::clamp(py + len * std::sin(heading), 1.0, kH - 1.0);
+            px = std::clamp(px + len * std::cos(heading), 1.0, kJoinsW - 1.0);
+            py = std::clamp(py + len * std::sin(heading), 1.0, kJoinsH - 1.0);
             pts.push_back(to_sub(px, py));
         }
         const bool closed = u(rng) < 0.5;
         std::set<std::pair<int, int>> lit;
-        visit_polyline(kW, kH, pts.data(), n, closed, {}, collect, &lit);
+        visit_polyline(kJoinsW, kJoinsH, pts.data(), n, closed, {}, collect, &lit);
         const std::size_t segments = closed ? pts.size() : pts.size() - 1;
         for (std::size_t i = 0; i < segments; ++i) {
             const SubPoint a = pts[i], b = pts[(i + 1) % pts.size()];

@@ -26,13 +26,13 @@ namespace {
 
 // A buffer with a canary border: `pad` canary rows above and below, `pad` canary pixels left
 // and right of each row, and an odd number of spare bytes at the end of each row (stride).
-struct Guarded {
+struct CanaryCanvas {
     int w, h, pad;
     PixelFormat f;
     std::ptrdiff_t stride;
     std::vector<uint8_t> bytes;
     static constexpr uint8_t kCanary = 0xA5;
-    Guarded(int w_, int h_, PixelFormat f_, int pad_ = 3) : w(w_), h(h_), pad(pad_), f(f_) {
+    CanaryCanvas(int w_, int h_, PixelFormat f_, int pad_ = 3) : w(w_), h(h_), pad(pad_), f(f_) {
         stride = static_cast<std::ptrdiff_t>((w + 2 * pad) * f.bytes_per_pixel() + 3);  // odd
         bytes.assign(static_cast<std::size_t>(stride * (h + 2 * pad)), kCanary);
         Canvas c = canvas();
@@ -151,7 +151,7 @@ TEST(Raster, ClippingNeverWritesOutsideInAnyFormatOrStride) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> far(-3000, 3000), huge(-1e12, 1e12);
     for (const PixelFormat& f : kFormats) {
-        Guarded g(37, 23, f);  // odd sizes, odd stride
+        CanaryCanvas g(37, 23, f);  // odd sizes, odd stride
         const Canvas c = g.canvas();
         for (int k = 0; k < 3000; ++k) {
             const bool h = k % 5 == 0;
@@ -169,7 +169,7 @@ TEST(Raster, ClippingNeverWritesOutsideInAnyFormatOrStride) {
 }
 
 TEST(Raster, LinesOffTheCanvasOrWithHugeCoordinatesWriteNothing) {
-    Guarded g(40, 30, PixelFormat::rgb565());
+    CanaryCanvas g(40, 30, PixelFormat::rgb565());
     const Canvas c = g.canvas();
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     const std::pair<SubPoint, SubPoint> lines[] = {
@@ -320,7 +320,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
         }
         // The same on a canvas over a noisy background (blends depend on it), every format.
         const PixelFormat f = kFormats[static_cast<std::size_t>(k) % kFormatCount];
-        Guarded a(W, H, f), b(W, H, f);
+        CanaryCanvas a(W, H, f), b(W, H, f);
         const Canvas ca = a.canvas(), cb = b.canvas();
         for (int y = 0; y < H; ++y)
             for (int x = 0; x < W; ++x) {
@@ -342,7 +342,7 @@ TEST(Raster, RowBandsWriteExactlyTheWholeLinesPixelsInTheirRows) {
             }
         if (n == 2 && !pat.closed) {  // draw_line too, with and without its end points
             for (bool end : {true, false}) {
-                Guarded c(W, H, f), d(W, H, f);
+                CanaryCanvas c(W, H, f), d(W, H, f);
                 draw_line(c.canvas(), pat.pts[0], pat.pts[1], col, st, end);
                 draw_line(d.canvas(), pat.pts[0], pat.pts[1], col, st, end, {y0, y1});
                 for (int y = 0; y < H; ++y)
@@ -371,7 +371,7 @@ TEST(Raster, RowBandsTiledMakeTheSamePicture) {
             cols.push_back({static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng)), static_cast<uint8_t>(noise(rng))});
         }
         const LineStyle st = kBandStyles[k % 6];
-        Guarded a(W, H, f), b(W, H, f);
+        CanaryCanvas a(W, H, f), b(W, H, f);
         for (std::size_t i = 0; i < pats.size(); ++i)
             draw_polyline(a.canvas(), pats[i].pts.data(), static_cast<int>(pats[i].pts.size()), pats[i].closed, cols[i], st);
         for (int y0 = -3; y0 < H + 3;) {
@@ -382,7 +382,7 @@ TEST(Raster, RowBandsTiledMakeTheSamePicture) {
         }
         ASSERT_TRUE(b.canary_intact());
         ASSERT_EQ(a.bytes, b.bytes) << "set " << k << " format " << f.name;
-        ASSERT_NE(a.bytes, Guarded(W, H, f).bytes) << "set " << k << ": nothing was drawn, so nothing was compared";
+        ASSERT_NE(a.bytes, CanaryCanvas(W, H, f).bytes) << "set " << k << ": nothing was drawn, so nothing was compared";
     }
 }
 

@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "test_common.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
 
@@ -22,8 +23,10 @@ using noneuclid::fx::fixed;
 
 namespace {
 
+using noneuclid::test::kPi;
+
 using LD = long double;
-constexpr LD kPiL = 3.141592653589793238462643383279502884L;
+constexpr LD kPiL = std::numbers::pi_v<LD>;
 
 // The exact discrete path of one coasting body, independent of the engines: a segment starts at
 // (r0, theta0) with heading chi0 (carried frame); after distance D it is at the 3-vector
@@ -176,7 +179,7 @@ Drift drift(double K, const std::vector<long>& checkpoints) {
             const double r = static_cast<double>(b.centre.r), th = static_cast<double>(b.centre.theta);
             // A wrap turns the bearing by pi and leaves the body near the rim; a step through O turns
             // it by pi too, far from the rim; any other step turns it by far less.
-            const bool wrapped = std::fabs(std::remainder(th - theta[j], 2 * M_PI)) > 1 && r > static_cast<double>(w.R) / 2;
+            const bool wrapped = std::fabs(std::remainder(th - theta[j], 2 * kPi)) > 1 && r > static_cast<double>(w.R) / 2;
             const long before = paths[j].wraps;
             paths[j].step(wrapped);
             if (i % 97 == 0 || paths[j].wraps != before || checkpoint) {
@@ -187,7 +190,7 @@ Drift drift(double K, const std::vector<long>& checkpoints) {
                 EXPECT_TRUE(std::isfinite(r) && std::isfinite(th)) << b.desc->name << " step " << i;
                 EXPECT_LE(r, static_cast<double>(w.R)) << b.desc->name << " step " << i;
                 EXPECT_EQ(b.speed, speed[j]) << b.desc->name << ": coasting keeps the speed exactly";
-                EXPECT_LE(std::fabs(static_cast<double>(b.facing)), M_PI + 1e-4) << b.desc->name;
+                EXPECT_LE(std::fabs(static_cast<double>(b.facing)), kPi + 1e-4) << b.desc->name;
                 if (std::is_same_v<T, fixed> && K == 0) {
                     EXPECT_EQ(b.travel, travel[j]) << b.desc->name << ": a flat straight path never turns";
                 }

@@ -12,6 +12,7 @@
 #include "game_world.hpp"
 #include "geometry/reference.hpp"
 #include "files/dump.hpp"
+#include "test_common.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
@@ -24,7 +25,7 @@ namespace ref = noneuclid::geo::ref;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using noneuclid::test::kPi;
 
 template <class W>
 int ship_index(const W& w) {

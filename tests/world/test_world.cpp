@@ -1,6 +1,6 @@
 // The world: physics against the reference model, the limit circle, live curvature and
-// actions, determinism, built-in scenes, the dump. Scene files, input files and the world's
-// budget: test_scene_file.cpp.
+// actions, determinism, built-in scenes. The world's budget: test_budget.cpp; scene files, input
+// files and the dump: tests/files.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,7 @@
 
 #include "geometry/reference.hpp"
 #include "files/dump.hpp"
+#include "test_common.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
@@ -22,17 +23,11 @@ namespace ref = noneuclid::geo::ref;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180;
-
-double angle_diff(double a, double b) { return std::fabs(std::remainder(a - b, 2 * kPi)); }
-double plane_distance(Polar<double> a, Polar<double> b) {
-    return std::hypot(a.r * std::cos(a.theta) - b.r * std::cos(b.theta), a.r * std::sin(a.theta) - b.r * std::sin(b.theta));
-}
-template <class T>
-Polar<double> D(Polar<T> p) {
-    return {static_cast<double>(p.r), static_cast<double>(p.theta)};
-}
+using noneuclid::test::kPi;
+using noneuclid::test::deg;
+using noneuclid::test::angle_diff;
+using noneuclid::test::plane_distance;
+using noneuclid::test::D;
 
 Scene one_body(double K, double r, double theta_deg, double speed, double dir_deg, double facing_deg = 10,
                double R = kPi) {
@@ -121,7 +116,7 @@ TEST(Physics, ThrustAcceleratesAlongTheFacingAndSpinTurns) {
     w.press(Action::turn_left);
     for (int i = 0; i < 60; ++i) w.step(1.0 / 60);
     EXPECT_NEAR(w.bodies[0].speed, 0.6, 1e-12);  // turning does not change the velocity
-    EXPECT_NEAR(angle_diff(w.bodies[0].facing, kPi / 2 + s.turn_rate_deg * kDeg), 0, 1e-9);
+    EXPECT_NEAR(angle_diff(w.bodies[0].facing, kPi / 2 + deg(s.turn_rate_deg)), 0, 1e-9);
 }
 
 // ---- the limit circle ------------------------------------------------------------------------
@@ -167,8 +162,8 @@ TEST(LimitCircle, OnTheSphereTheRuleIsTheGeodesicThroughTheAntipode) {
         }
         // Past the antipode: opposite side, radius 2R - (R - 0.2 + 0.5) = R - 0.3, travel unchanged.
         EXPECT_NEAR(w.bodies[0].centre.r, R - 0.3, 1e-9);
-        EXPECT_NEAR(angle_diff(w.bodies[0].centre.theta, (40 + 180) * kDeg), 0, 1e-9);
-        EXPECT_NEAR(angle_diff(w.bodies[0].travel, 40 * kDeg), 0, 1e-9);
+        EXPECT_NEAR(angle_diff(w.bodies[0].centre.theta, deg(40 + 180)), 0, 1e-9);
+        EXPECT_NEAR(angle_diff(w.bodies[0].travel, deg(40)), 0, 1e-9);
     }
 }
 
@@ -337,32 +332,6 @@ TEST(Scenes, GridLinesAreTheGeodesicsPerpendicularToTheAxes) {
         EXPECT_EQ(checked, line->vertices.size()) << "K=" << K << ": the world has the grid line's body, once";
         EXPECT_GE(checked, 3u) << "K=" << K;
     }
-}
-
-// ---- the dump ----------------------------------------------------------------------------------
-
-TEST(Dump, EdgesListTheirPointsEndsIncludedAndScreenMirrorsThem) {
-    Scene s = one_body(0.0, 1.0, 0, 0, 0, 90);
-    s.bodies[0].tessellation = 4;
-    World<double> w(s);
-    std::string out;
-    dump_frame(w, {200, 100, noneuclid::geo::Projection::azimuthal_equidistant}, out);
-    // 3 closed edges of 5 points; screen: R = pi fills 50 px (half the smaller side)
-    EXPECT_EQ(out.rfind("{\"frame\":0,\"t\":0,\"K\":0,\"bodies\":[{\"name\":\"b\",\"kind\":\"body\",\"center\":[1,0],\"facing\":90,", 0),
-              0u)
-        << out;
-    EXPECT_NE(out.find("\"travel\":[0,0]"), std::string::npos);
-    const std::size_t edges = out.find("\"edges\":["), screen = out.find("\"screen\":[");
-    ASSERT_NE(edges, std::string::npos);
-    ASSERT_NE(screen, std::string::npos);
-    const std::string e = out.substr(edges, screen - edges), sc = out.substr(screen);
-    EXPECT_EQ(std::count(e.begin(), e.end(), '['), 1 + 3 + 15);   // the list, 3 edges, 15 points
-    EXPECT_EQ(std::count(sc.begin(), sc.end(), '['), 1 + 3 + 15);
-    // the first vertex: centre (1, 0) plus 0.1 north (facing 90) -> x = 100 + 50/pi * 1, y = 50 - 50/pi * 0.1
-    char want[64];
-    std::snprintf(want, sizeof want, "\"screen\":[[[%.9g,%.9g]", 100 + 50 / kPi * 1.0, 50 - 50 / kPi * 0.1);
-    EXPECT_NE(out.find(want), std::string::npos) << out.substr(screen, 80) << " vs " << want;
-    EXPECT_EQ(out.back(), '\n');
 }
 
 }  // namespace

@@ -1,0 +1,170 @@
+// Scene files (the documented example, every error with its place, grids and extensions),
+// input files (only a regular file within its limit is read) and a scene file over the world's
+// budget (named with its place; the budget itself: tests/world/test_budget.cpp).
+#include <gtest/gtest.h>
+#include <sys/stat.h>  // mkfifo
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "world/budget.hpp"
+#include "files/scene_file.hpp"
+#include "files/text_file.hpp"
+#include "world/world.hpp"
+
+using namespace noneuclid::world;
+using namespace noneuclid::files;
+
+namespace {
+
+// ---- scene files -------------------------------------------------------------------------------
+
+const char* kExample = R"(curvature = -1.0            # K in [-1, 1]
+limit_radius = 3.14159      # R in world units
+[[body]]
+name = "ship"
+position = [0.5, 30.0]      # [r, theta deg]
+facing = 90.0
+velocity = [0.2, 90.0]
+spin = 0.0
+color = "#ff4040"
+closed = true
+tessellation = 8
+vertices = [[0.1, 0.0], [0.1, 140.0], [0.1, 220.0]]
+)";
+
+TEST(SceneFile, TheDocumentedExampleLoads) {
+    Scene s;
+    SceneError err;
+    ASSERT_TRUE(parse_scene(kExample, "ship.toml", s, err)) << err.to_string();
+    EXPECT_EQ(s.curvature, -1.0);
+    EXPECT_EQ(s.limit_radius, 3.14159);
+    ASSERT_EQ(s.bodies.size(), 1u);
+    const SceneBody& b = s.bodies[0];
+    EXPECT_EQ(b.name, "ship");
+    EXPECT_EQ(b.r, 0.5);
+    EXPECT_EQ(b.theta_deg, 30.0);
+    EXPECT_EQ(b.speed, 0.2);
+    EXPECT_EQ(b.color, (Rgb{255, 64, 64}));
+    EXPECT_TRUE(b.controlled);  // a body named ship is the one the buttons fly
+    ASSERT_EQ(b.vertices.size(), 3u);
+    EXPECT_EQ(b.vertices[1].phi_deg, 140.0);
+}
+
+struct BadCase {
+    const char* text;
+    long line, column;
+    const char* says;
+};
+TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
+    const BadCase cases[] = {
+        {"curvature = \n", 1, 13, "not valid TOML"},
+        {"curvature = 2.0\n", 1, 13, "'curvature' must be from -1 to 1 (K), found 2"},
+        {"curvature = \"flat\"\n", 1, 13, "expected a number for 'curvature' (K), found a string"},
+        {"curvture = 0.5\n", 1, 1, "unknown key 'curvture'"},
+        {"limit_radius = -1\n", 1, 16, "'limit_radius' must be from"},
+        {"presets = \"all\"\n", 1, 11, "expected presets = [K, ...]"},
+        {"presets = [0, 3]\n", 1, 15, "'presets' must be from -1 to 1"},
+        {"body = 3\n", 1, 8, "expected [[body]] tables, found an integer"},
+        {"[[body]]\nname = \"a\"\n", 1, 1, "body 'a': expected 'vertices' = [[rho, phi], ...], found none"},
+        {"[[body]]\nname = \"a\"\nvertices = []\n", 3, 12, "with at least one vertex, found an empty array"},
+        {"[[body]]\nname = \"a\"\nvertices = [[0.1]]\n", 3, 13, "expected each vertex as [rho, phi in degrees], found an array of 1"},
+        {"[[body]]\nname = \"a\"\nvertices = [[-0.1, 0]]\n", 3, 14, "'vertices' must be from 0"},
+        {"[[body]]\nname = \"a\"\nvertices = [[0.1, \"x\"]]\n", 3, 19, "expected a number for 'vertices'"},
+        {"[[body]]\nname = \"a\"\nposition = [1]\nvertices = [[0.1, 0]]\n", 3, 12, "expected 'position' = [r, theta in degrees], found an array of 1"},
+        {"[[body]]\nname = \"a\"\ncolor = \"red\"\nvertices = [[0.1, 0]]\n", 3, 9, "expected a colour \"#rrggbb\" for 'color', found \"red\""},
+        {"[[body]]\nname = \"a\"\nclosed = 1\nvertices = [[0.1, 0]]\n", 3, 10, "expected true or false for 'closed', found an integer"},
+        {"[[body]]\nname = \"a\"\ntessellation = 0\nvertices = [[0.1, 0]]\n", 3, 16, "'tessellation' must be from 1 to 256"},
+        {"[[body]]\nname = \"a\"\ntessellation = 2.5\nvertices = [[0.1, 0]]\n", 3, 16, "expected a whole number for 'tessellation'"},
+        {"[[body]]\nname = \"a\"\nfacing = [90]\nvertices = [[0.1, 0]]\n", 3, 10, "expected a number for 'facing' (degrees), found an array"},
+        {"[[body]]\nname = \"a\"\nspeed = 1\nvertices = [[0.1, 0]]\n", 3, 1, "body 'a': unknown key 'speed'"},
+        {"[[body]]\nname = 7\nvertices = [[0.1, 0]]\n", 2, 8, "expected a string for 'name', found an integer"},
+        {"[[grid]]\nkind = \"hex\"\n", 2, 8, "grid: expected kind = \"axes\" or \"radial\", found \"hex\""},
+        {"[[grid]]\nspacing = 0\n", 2, 11, "'spacing' must be from"},
+    };
+    for (const BadCase& c : cases) {
+        Scene s;
+        SceneError err;
+        EXPECT_FALSE(parse_scene(c.text, "s.toml", s, err)) << c.text;
+        EXPECT_EQ(err.line, c.line) << c.text << " -> " << err.to_string();
+        EXPECT_EQ(err.column, c.column) << c.text << " -> " << err.to_string();
+        EXPECT_NE(err.message.find(c.says), std::string::npos) << c.text << " -> " << err.to_string();
+        EXPECT_EQ(err.to_string().rfind("s.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": ", 0), 0u)
+            << err.to_string();
+    }
+    Scene s;
+    SceneError err;
+    EXPECT_FALSE(load_scene_file("/nonexistent/scene.toml", s, err));
+    EXPECT_EQ(err.to_string().rfind("/nonexistent/scene.toml: the scene file: cannot read it", 0), 0u) << err.to_string();
+}
+
+TEST(SceneFile, GridsAndExtensions) {
+    Scene s;
+    SceneError err;
+    ASSERT_TRUE(parse_scene("presets = [-0.5, 0.5]\nsweep_rate = 0.2\n[[grid]]\nkind = \"radial\"\nlines = 8\n"
+                            "[[body]]\nvertices = [[0.1, 0]]\nacceleration = [0.1, 45]\ncontrolled = true\n",
+                            "g.toml", s, err))
+        << err.to_string();
+    EXPECT_EQ(s.presets, (std::vector<double>{-0.5, 0.5}));
+    EXPECT_EQ(s.bodies.size(), 9u);
+    EXPECT_TRUE(s.bodies[0].grid);
+    EXPECT_EQ(s.bodies.back().name, "body1");
+    EXPECT_EQ(s.bodies.back().accel, 0.1);
+    EXPECT_TRUE(s.bodies.back().controlled);
+}
+
+}  // namespace
+
+// ---- input files ----------------------------------------------------------------------------
+
+// Only a regular file within its limit is read: a FIFO does not block (it is not opened), a
+// directory or a device is not read as an empty or endless file.
+TEST(InputFiles, OnlyRegularFilesWithinTheLimit) {
+    const std::string dir = ::testing::TempDir() + "input_files";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string fifo = dir + "/fifo", big = dir + "/big.toml", small = dir + "/small.toml";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    { std::ofstream(big) << std::string(kSceneFileLimit + 1, '#'); }
+    { std::ofstream(small) << "curvature = 0.5\n"; }
+    std::string text, why;
+    EXPECT_FALSE(read_text_file(fifo, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("not a regular file"), std::string::npos) << why;
+    EXPECT_FALSE(read_text_file(dir, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_EQ(why, "it is a directory, not a file");
+    EXPECT_FALSE(read_text_file("/dev/zero", kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("not a regular file"), std::string::npos) << why;
+    EXPECT_FALSE(read_text_file(big, kSceneFileLimit, "a scene file", text, why));
+    EXPECT_EQ(why, "it is 1048577 bytes, over the 1 MiB a scene file may have");
+    EXPECT_FALSE(read_text_file(dir + "/none", kSceneFileLimit, "a scene file", text, why));
+    EXPECT_NE(why.find("cannot read it (No such file or directory)"), std::string::npos) << why;
+    ASSERT_TRUE(read_text_file(small, kSceneFileLimit, "a scene file", text, why)) << why;
+    EXPECT_EQ(text, "curvature = 0.5\n");
+    // Through the scene loader: one sentence with the path.
+    Scene s;
+    SceneError err;
+    EXPECT_FALSE(load_scene_file(fifo, s, err));
+    EXPECT_EQ(err.to_string().rfind(fifo + ": the scene file: it is not a regular file", 0), 0u) << err.to_string();
+}
+
+// ---- a scene file over the world's budget -----------------------------------------------------
+
+TEST(Budget, ASceneFileOverItNamesTheGridAndWhatToLower) {
+    Scene s;
+    SceneError err;
+    // 2 (2 * 314 + 1) = 1,258 lines (spacing 0.01 over R = pi), each 2 * 3,142 + 1 = 6,285 vertices
+    // (a vertex every 0.001 along pi each way).
+    EXPECT_FALSE(parse_scene("[[grid]]\nkind = \"axes\"\nspacing = 0.01\nstep = 0.001\n", "big.toml", s, err));
+    EXPECT_EQ(err.to_string(), "big.toml:1:1: grid: it would have 7,906,530 vertices, over the 524,288 a world may have: "
+                               "use fewer bodies or vertices (a larger spacing or step, a shorter length, fewer lines)");
+    // Points: few bodies, but each tessellated finely.
+    std::string text = "[[body]]\nname = \"b\"\ntessellation = 256\nvertices = [";
+    for (int i = 0; i < 5000; ++i) text += (i ? ", " : "") + std::string("[0.1, ") + std::to_string(i * 0.072) + "]";
+    text += "]\n";
+    ASSERT_TRUE(parse_scene(text, "fine.toml", s, err)) << err.to_string();
+    std::string why;
+    EXPECT_FALSE(within_budget(s, why));
+    EXPECT_EQ(why, "it would have 1,280,001 points to draw a frame, over the 1,048,576 a world may have: use fewer "
+                   "bodies or vertices, or a lower tessellation");
+}
