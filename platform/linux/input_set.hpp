@@ -39,7 +39,7 @@ public:
 private:
     static constexpr int kMaxFds = 32;
     std::vector<InputSource*> sources_;
-    pollfd fds_[kMaxFds];
+    pollfd fds_[kMaxFds] = {};
     int errors_in_a_row_ = 0;
 };
 
