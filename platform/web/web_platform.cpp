@@ -38,6 +38,13 @@ bool AtomicFile::commit(std::string& error) {
 
 void AtomicFile::abort() {}
 
+const char* file_kind_name(FileKind) { return "a file of the page's memory"; }
+
+bool output_allowed(const std::string& path, std::string& error) {
+    error = "cannot write " + path + ": " + kNoFiles + ".";
+    return false;
+}
+
 std::string state_file(const std::string&, std::string& error) {
     error = "a web page keeps no files between runs";
     return {};

@@ -38,6 +38,7 @@ int run_command(int argc, char** argv, int first) {
         Args args(argc, argv, first);
         parse_options(args, given, Command::run);
     }
+    check_outputs(given);  // --record and --screenshot come from the command line only
     const DisplayRow& shown = display_for(given);
     files::Board board;
     if (shown.kiosk) {

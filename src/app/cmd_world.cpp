@@ -100,6 +100,7 @@ int render_command(int argc, char** argv, int first) {
     const Options o = layered_options(argc, argv, first, Command::render, script);
     if (o.out.empty() && o.gif.empty())
         usage_error("render needs --out FILE.png or --gif FILE.gif: where to write the picture.");
+    check_outputs(o);
     const world::Scene scene = load_scene(o);
     const platform::LoadedFont font = load_font(o);
     std::string error;

@@ -4,7 +4,9 @@
 // no #if. Declarations only: no OS header here.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -68,10 +70,26 @@ std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& err
 
 // ---- files ----------------------------------------------------------------------------------
 
+// What the program finds at a path, without following a symbolic link there (lstat).
+enum class FileKind { missing, regular, directory, symlink, fifo, device, socket, other };
+// "a directory", "a symbolic link", "a pipe (FIFO)", "a device", ...
+const char* file_kind_name(FileKind kind);
+
+// Whether an output file (--out, --gif, --record, --screenshot, demo's pictures) may be written
+// at `path`, decided as AtomicFile::open decides: nothing there yet, or a regular file (replaced
+// whole, keeping its mode); a FIFO, or this program's own standard output by any name
+// (/dev/stdout, /dev/fd/1), is written into. Anything else is never replaced nor written: a
+// directory, a device, a socket, a symbolic link. False with one sentence naming `path`.
+bool output_allowed(const std::string& path, std::string& error);
+
 // A file written whole or not at all (platform/posix/atomic_file.cpp): into a temporary file
 // beside `path`, then flushed, synced to the disk and renamed over `path` by commit(). Until
 // then `path` is untouched; abort(), a failed commit() or the destructor remove the temporary
-// file. A crash leaves at most a hidden temporary file (.NAME.XXXXXX), never a half-written NAME.
+// file. A replaced file keeps its permissions. A crash leaves at most a hidden temporary file
+// (.NAME.noneuclid-XXXXXX, locked while its writer lives), never a half-written NAME, and the
+// next write of NAME removes the ones whose writer is gone. A target output_allowed() refuses
+// is refused here too; a FIFO or the program's standard output is written into as a stream
+// (commit() flushes it; there is nothing to rename, and a failed write leaves what was written).
 class AtomicFile {
 public:
     AtomicFile() = default;
@@ -88,6 +106,7 @@ public:
 private:
     std::string path_, temp_;
     std::FILE* file_ = nullptr;
+    bool stream_ = false;  // written into (a FIFO, standard output): no temporary file
 };
 
 // The path of a file the program keeps between runs (the game's high scores): in the

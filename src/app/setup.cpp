@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "app/commands.hpp"
 #include "world/budget.hpp"
@@ -81,6 +82,14 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
     auto table = std::make_unique<HighScoreTable>(path);
     std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", table->path().c_str(), table->best());
     return table;
+}
+
+void check_outputs(const Options& o) {
+    const std::pair<const char*, const std::string*> outputs[] = {
+        {"--out", &o.out}, {"--gif", &o.gif}, {"--record", &o.record}, {"--screenshot", &o.screenshot}};
+    std::string error;
+    for (const auto& [option, path] : outputs)
+        if (!path->empty() && !platform::output_allowed(*path, error)) usage_error(std::string(option) + ": " + error);
 }
 
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {

@@ -32,6 +32,10 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
 // directory (said in one line on stderr). Says where the table is, in one line. A file in a
 // directory that does not exist is a UsageError.
 std::unique_ptr<HighScoreTable> open_scores(const std::string& choice);
+// Refuses (a UsageError, before any work) an output path that must not be written
+// (platform::output_allowed: a directory, a device, a symbolic link): --out, --gif, --record
+// and --screenshot.
+void check_outputs(const Options& o);
 // The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
 
