@@ -109,6 +109,36 @@ private:
     bool stream_ = false;  // written into (a FIFO, standard output): no temporary file
 };
 
+// Files the program keeps and shares between processes (the high-score table,
+// platform/posix/kept_file.cpp).
+//
+// Reads `path` whole if it is a regular file, at most `limit` + 1 bytes (so a caller can tell
+// a file over `limit`). A symbolic link is not followed and nothing but a regular file is
+// opened (a FIFO is never waited on). `kind` says what is there; false with one sentence (no
+// path, no full stop) in `error` when it is not a regular file or cannot be read.
+bool read_kept_file(const std::string& path, std::size_t limit, std::string& out, FileKind& kind, std::string& error);
+// Renames the regular file `path` to `path` + `suffix`, or if that exists to `path` + `suffix`
+// + ".2", ".3", ... (up to ".99"), never over an existing file. The name used in `aside`; false
+// with one sentence (no full stop) in `error`.
+bool set_aside(const std::string& path, const std::string& suffix, std::string& aside, std::string& error);
+// An exclusive lock (flock) on the directory of `path`, held while the object lives: the
+// processes that share a file there take turns to read, change and write it. Waited for up to
+// five seconds; then busy() is true and held() false. held() is false too when the directory
+// cannot be opened (the caller goes on unlocked).
+class DirectoryLock {
+public:
+    explicit DirectoryLock(const std::string& path);
+    ~DirectoryLock();
+    DirectoryLock(const DirectoryLock&) = delete;
+    DirectoryLock& operator=(const DirectoryLock&) = delete;
+    bool held() const { return fd_ >= 0; }
+    bool busy() const { return busy_; }
+
+private:
+    int fd_ = -1;
+    bool busy_ = false;
+};
+
 // The path of a file the program keeps between runs (the game's high scores): in the
 // service's state directory ($STATE_DIRECTORY, which systemd's StateDirectory= sets), else in
 // $XDG_STATE_HOME/noneuclid, else ~/.local/state/noneuclid, made if missing. "" with one sentence

@@ -66,7 +66,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");
 }
 
-std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
+std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play) {
     if (choice == "none") return nullptr;
     std::error_code ec;
     const std::filesystem::path dir = std::filesystem::path(choice).parent_path();
@@ -80,7 +80,14 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
         return nullptr;
     }
     auto table = std::make_unique<HighScoreTable>(path);
-    std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", table->path().c_str(), table->best());
+    if (!table->load(play, error)) {
+        // A table named on the command line, or one to print, is the user's to fix; the state
+        // directory's is the kiosk's, which plays on without one.
+        if (!choice.empty() || !play) usage_error(error);
+        std::fprintf(stderr, "noneuclid: the high scores are not kept: %s\n", error.c_str());
+        return nullptr;
+    }
+    std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", world::quote(table->path(), world::kPathLimit).c_str(), table->best());
     return table;
 }
 
