@@ -106,7 +106,9 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.draw.line_width = static_cast<int32_t>(o.line_width * render::kSub + 0.5);
     so.hud = o.hud;
     so.show_fps = o.stats;
-    so.scene_name = scene.name;
+    // A scene file by its name alone: the HUD shows the same words however the path was spelt
+    // (typed relative in a run, absolute in its recording), so a replay draws the same pixels.
+    so.scene_name = std::filesystem::path(scene.name).filename().string();
     so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
     so.attract.idle_seconds = o.attract;
     so.attract.sweep_seconds = o.sweep;
