@@ -166,7 +166,8 @@ bool read_texture(const std::string& path, world::Image& out, std::string& why);
 class GifWriter {
 public:
     virtual ~GifWriter() = default;
-    // Adds a frame shown for `centiseconds`; false with one sentence in `error`.
+    // Adds a frame shown for `centiseconds` (0 to 65535: a GIF's delay is 16 bits); false with
+    // one sentence in `error`.
     virtual bool frame(const render::Canvas& c, int centiseconds, std::string& error) = 0;
     virtual bool finish(std::string& error) = 0;
 };
