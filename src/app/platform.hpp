@@ -30,8 +30,9 @@ struct CpuTime {
 CpuTime cpu_time();
 // Whether standard error is a terminal (where a long run shows its progress).
 bool stderr_is_terminal();
-// At start: a write past the file-size limit (RLIMIT_FSIZE) fails with an error the program
-// reports, instead of SIGXFSZ ending it halfway through a file.
+// At start: a write past the file-size limit (RLIMIT_FSIZE), or into a pipe whose reader has
+// gone (`noneuclid dump | head`), fails with an error the program reports, instead of SIGXFSZ or
+// SIGPIPE ending it silently halfway through.
 void prepare_process();
 // From now on SIGINT, SIGTERM, SIGHUP and SIGQUIT ask the program to stop instead of ending it:
 // stop_signal() then says which came (0: none yet), and waits (poll, sleep) end early.
