@@ -36,7 +36,7 @@ expect "a recording's font a FIFO" 2 "font.psf: the font file is a pipe (FIFO), 
 printf '0.5\0junk press thrust\n' > nul.txt
 expect "a NUL in a time word" 2 "nul.txt:1: expected a time in seconds (a number >= 0) or a setting" \
     "$noneuclid" dump --actions nul.txt --frames 1
-grep -qF "found '0.5\\x00junk'" err.txt && pass "the NUL shown escaped" || fail "the NUL not shown escaped: $(cat err.txt)"
+if grep -qF "found '0.5\\x00junk'" err.txt; then pass "the NUL shown escaped"; else fail "the NUL not shown escaped: $(cat err.txt)"; fi
 printf '1\033[2J press thrust\n' > esc.txt
 expect "an escape in a time word" 2 "esc.txt:1: expected a time in seconds" "$noneuclid" dump --actions esc.txt --frames 1
 printf '1.5\vpress thrust\n' > vt.txt

@@ -20,13 +20,13 @@ failures=0
 fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
 pass() { echo "PASS $*"; }
 
-# The command that writes FILE through OPTION (one of the four), small and quick.
-writer() {
+# cmd: the command that writes FILE through OPTION (one of the four), small and quick.
+command_for() {
     case "$1" in
-        --out) echo "$noneuclid" render --scene fig1 --frames 1 --size 64x64 --out "$2" ;;
-        --gif) echo "$noneuclid" render --scene fig1 --frames 2 --size 64x64 --gif "$2" ;;
-        --record) echo "$noneuclid" run --display png --scene fig1 --frames 2 --size 64x64 --record "$2" --screenshot shot.png ;;
-        --screenshot) echo "$noneuclid" run --display png --scene fig1 --frames 2 --size 64x64 --screenshot "$2" ;;
+        --out) cmd=("$noneuclid" render --scene fig1 --frames 1 --size 64x64 --out "$2") ;;
+        --gif) cmd=("$noneuclid" render --scene fig1 --frames 2 --size 64x64 --gif "$2") ;;
+        --record) cmd=("$noneuclid" run --display png --scene fig1 --frames 2 --size 64x64 --record "$2" --screenshot shot.png) ;;
+        --screenshot) cmd=("$noneuclid" run --display png --scene fig1 --frames 2 --size 64x64 --screenshot "$2") ;;
     esac
 }
 # What a path is, without following a link: its type, device numbers, size, mode and link target.
@@ -45,8 +45,8 @@ starts_with() { [ "$(head -c "${#2}" "$1" 2>/dev/null)" = "$2" ]; }
 refused() {
     local name=$1 option=$2 path=$3 before rc=0
     before=$(describe "$path")
-    # shellcheck disable=SC2046
-    timeout 60 $(writer "$option" "$path") > out.txt 2> err.txt || rc=$?
+    command_for "$option" "$path"
+    timeout 60 "${cmd[@]}" > out.txt 2> err.txt || rc=$?
     if [ "$rc" != 2 ]; then fail "$name: exit $rc, not 2: $(cat err.txt)"; return; fi
     if [ "$(wc -l < err.txt)" != 1 ] || ! grep -q -- "^noneuclid: $option: cannot write $path: it is .*, not a regular file, and is left alone: give the path of " err.txt; then
         fail "$name: not the one sentence: $(cat err.txt)"; return
@@ -76,8 +76,8 @@ for option in --out --gif --record --screenshot; do
     refused "$option a dangling symbolic link" "$option" dangling
     [ -n "$socket" ] && refused "$option a socket" "$option" "$socket"
 done
-[ "$(cat target.txt)" = "the file a link points to" ] && pass "the links' target untouched" || fail "target.txt changed"
-[ -e nowhere ] && fail "the dangling link's target was made" || pass "the dangling link's target not made"
+if [ "$(cat target.txt)" = "the file a link points to" ]; then pass "the links' target untouched"; else fail "target.txt changed"; fi
+if [ -e nowhere ]; then fail "the dangling link's target was made"; else pass "the dangling link's target not made"; fi
 [ -n "$socket" ] || echo "SKIP sockets: no python3 to make one"
 
 # Written into: a FIFO with a reader, and /dev/stdout (a pipe here).
@@ -86,23 +86,23 @@ for option in --out --gif --record --screenshot; do
     cat fifo > got &
     reader=$!
     rc=0
-    # shellcheck disable=SC2046
-    timeout 60 $(writer "$option" fifo) > /dev/null 2> err.txt || rc=$?
+    command_for "$option" fifo
+    timeout 60 "${cmd[@]}" > /dev/null 2> err.txt || rc=$?
     wait "$reader"
     if [ "$rc" = 0 ] && [ -p fifo ] && starts_with got "$(magic "$option")"; then pass "$option a FIFO with a reader: written into"
     else fail "$option a FIFO with a reader: exit $rc, fifo $(describe fifo), got $(head -c 12 got | od -c | head -1): $(cat err.txt)"; fi
 
     rm -f fifo && mkfifo fifo
     rc=0
-    # shellcheck disable=SC2046
-    timeout 60 $(writer "$option" fifo) > /dev/null 2> err.txt || rc=$?
+    command_for "$option" fifo
+    timeout 60 "${cmd[@]}" > /dev/null 2> err.txt || rc=$?
     if [ "$rc" != 0 ] && [ "$rc" != 124 ] && [ -p fifo ] && grep -q "cannot write fifo: it is a pipe (FIFO) that nothing reads: start its reader first" err.txt; then
         pass "$option a FIFO nothing reads: exit $rc, not waited on"
     else fail "$option a FIFO nothing reads: exit $rc (124: it waited): $(cat err.txt)"; fi
 done
 for option in --out --gif; do
-    # shellcheck disable=SC2046
-    timeout 60 $(writer "$option" /dev/stdout) 2> err.txt | cat > piped
+    command_for "$option" /dev/stdout
+    timeout 60 "${cmd[@]}" 2> err.txt | cat > piped
     rc=${PIPESTATUS[0]}
     if [ "$rc" = 0 ] && starts_with piped "$(magic "$option")"; then pass "$option /dev/stdout into a pipe"
     else fail "$option /dev/stdout: $(cat err.txt)"; fi
@@ -113,8 +113,8 @@ for option in --out --gif --record --screenshot; do
     for mode in 600 640; do
         name=kept${option#--}$mode
         echo "an earlier file" > "$name" && chmod "$mode" "$name"
-        # shellcheck disable=SC2046
-        $(writer "$option" "$name") > /dev/null 2> err.txt
+        command_for "$option" "$name"
+        "${cmd[@]}" > /dev/null 2> err.txt
         if [ "$(stat -c %a "$name")" = "$mode" ] && starts_with "$name" "$(magic "$option")"; then pass "$option keeps mode $mode"
         else fail "$option: mode $(stat -c %a "$name"), not $mode: $(cat err.txt)"; fi
     done
@@ -136,15 +136,15 @@ else
     else fail "B removed A's temporary file, or wrote no recording: $(cat b.txt)"; fi
     kill -KILL "$a"
     wait "$a" 2> /dev/null
-    [ -e "$a_temp" ] && pass "SIGKILL leaves the temporary file" || fail "the killed writer left nothing (it should have)"
+    if [ -e "$a_temp" ]; then pass "SIGKILL leaves the temporary file"; else fail "the killed writer left nothing (it should have)"; fi
     echo "mine" > .rec.txt.backup
     echo "held" > .rec.txt.noneuclid-HELDxx
     exec 9< .rec.txt.noneuclid-HELDxx && flock -x 9  # held by this shell while C runs
     "$noneuclid" run --display png --scene fig1 --frames 3 --size 64x64 --record rec.txt --screenshot c.png 2> c.txt
     if [ ! -e "$a_temp" ] && grep -q "^frames 3$" rec.txt; then pass "the next write removed the killed writer's temporary file"
     else fail "the killed writer's temporary file is still there: $(leftovers): $(cat c.txt)"; fi
-    [ -e .rec.txt.backup ] && pass "a user's own .rec.txt.backup left alone" || fail "removed .rec.txt.backup"
-    [ -e .rec.txt.noneuclid-HELDxx ] && pass "a locked temporary file left alone" || fail "removed a locked temporary file"
+    if [ -e .rec.txt.backup ]; then pass "a user's own .rec.txt.backup left alone"; else fail "removed .rec.txt.backup"; fi
+    if [ -e .rec.txt.noneuclid-HELDxx ]; then pass "a locked temporary file left alone"; else fail "removed a locked temporary file"; fi
     exec 9<&-
 fi
 

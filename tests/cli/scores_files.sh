@@ -54,8 +54,10 @@ refused "a symbolic link" link "it is a symbolic link, not a regular file"
 refused "a dangling symbolic link" dangling "it is a symbolic link, not a regular file"
 refused "a directory" dir "it is a directory, not a regular file"
 refused "a FIFO" fifo "it is a pipe (FIFO), not a regular file"
-[ "$device" = /dev/null ] && [ "$(id -u)" = 0 ] || refused "a device ($device)" "$device" "it is a device, not a regular file"
-[ -e nowhere ] && fail "the dangling link's target was made" || pass "nothing made where the dangling link points"
+if [ "$device" != /dev/null ] || [ "$(id -u)" != 0 ]; then  # (as root, only a copy: see above)
+    refused "a device ($device)" "$device" "it is a device, not a regular file"
+fi
+if [ -e nowhere ]; then fail "the dangling link's target was made"; else pass "nothing made where the dangling link points"; fi
 
 # A damaged table of the game's own, with an escape sequence and a bell in it.
 damaged=$(printf '%s\n100 1 2026-11-25T14:03:11Z\n50 1 \033[2J\007\n' "$header")
