@@ -1,5 +1,8 @@
 #include "files/console_font.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -44,6 +47,14 @@ std::string describe(const LoadedFont& f) {
            + ")";
 }
 
+// What a path that is not a regular file is, for the sentence that refuses it.
+const char* not_a_file(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory, not a file";
+    if (S_ISFIFO(mode)) return "a pipe (FIFO), not a file (it is not waited on)";
+    if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device, not a file";
+    return "not a regular file";
+}
+
 bool ends_with(std::string_view s, std::string_view suffix) {
     return s.size() >= suffix.size() && s.substr(s.size() - suffix.size()) == suffix;
 }
@@ -51,10 +62,23 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 }  // namespace
 
 bool load_console_font(const std::string& path, LoadedFont& out, std::string& error) {
+    // Only a regular file is read: opened without waiting (a FIFO would block until something
+    // wrote to it), then checked for what it is before a byte is read.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat st {};
+    if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        const int e = errno;
+        error = path + (fd < 0 ? ": cannot open the font file (" + std::string(std::strerror(e)) + ")"
+                               : std::string(": the font file is ") + not_a_file(st.st_mode));
+        if (fd >= 0) close(fd);
+        return false;
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     errno = 0;
-    gzFile file = gzopen(path.c_str(), "rb");
+    gzFile file = gzdopen(fd, "rb");
     if (file == nullptr) {
         const int e = errno;
+        close(fd);
         error = path + ": cannot open the font file ("
                 + (e != 0 ? std::strerror(e) : "out of memory") + ")";
         return false;

@@ -91,6 +91,12 @@ public:
             error = "cannot write " + path_ + ": a frame is not the animation's size; it is left as it was.";
             return false;
         }
+        if (centiseconds < 0 || centiseconds > 65535) {  // a GIF frame's delay is 16 bits
+            error = "cannot write " + path_ + ": a frame's delay of " + std::to_string(centiseconds) +
+                    " centiseconds is past the 655.35 s a GIF frame can be shown; it is left as it was.";
+            drop();
+            return false;
+        }
         if (stop_signal()) return stopped(error);
         if (!palette_.take(c)) return failed(E_GIF_ERR_NOT_ENOUGH_MEM, error);
         GraphicsControlBlock gcb{};

@@ -38,6 +38,29 @@ bool AtomicFile::commit(std::string& error) {
 
 void AtomicFile::abort() {}
 
+const char* file_kind_name(FileKind) { return "a file of the page's memory"; }
+
+bool output_allowed(const std::string& path, std::string& error) {
+    error = "cannot write " + path + ": " + kNoFiles + ".";
+    return false;
+}
+
+bool read_kept_file(const std::string&, std::size_t, std::string& out, FileKind& kind, std::string& error) {
+    out.clear(), kind = FileKind::missing;
+    error = "a web page keeps no files between runs";
+    return false;
+}
+
+bool set_aside(const std::string&, const std::string&, std::string& aside, std::string& error) {
+    aside.clear();
+    error = "a web page keeps no files between runs";
+    return false;
+}
+
+// A page is one process: there is nobody to take turns with.
+DirectoryLock::DirectoryLock(const std::string&) {}
+DirectoryLock::~DirectoryLock() = default;
+
 std::string state_file(const std::string&, std::string& error) {
     error = "a web page keeps no files between runs";
     return {};

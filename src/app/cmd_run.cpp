@@ -38,6 +38,7 @@ int run_command(int argc, char** argv, int first) {
         Args args(argc, argv, first);
         parse_options(args, given, Command::run);
     }
+    check_outputs(given);  // --record and --screenshot come from the command line only
     const DisplayRow& shown = display_for(given);
     files::Board board;
     if (shown.kiosk) {
@@ -81,7 +82,7 @@ int run_command(int argc, char** argv, int first) {
             return 2;
         }
     }
-    const std::unique_ptr<HighScoreTable> scores = run.scene.game.on ? open_scores(o.scores) : nullptr;
+    const std::unique_ptr<HighScoreTable> scores = run.scene.game.on ? open_scores(o.scores, true) : nullptr;
     if (scores && !o.best_given) o.best = scores->best();
     compose_run(run, o, script, *display, shown.name, recording.file(), scores.get());
     int status = run.loop->run();

@@ -13,7 +13,7 @@ int scores_command(int argc, char** argv, int first) {
     parse_options(args, o, Command::scores);
     const std::string& choice = o.scores;
     if (choice == "none") usage_error("scores --scores none: name the table to print, or leave --scores out.");
-    const std::unique_ptr<HighScoreTable> table = open_scores(choice);
+    const std::unique_ptr<HighScoreTable> table = open_scores(choice, false);
     if (!table) return 1;
     if (table->entries().empty()) std::printf("no games yet\n");
     int rank = 0;

@@ -1,13 +1,12 @@
 // `noneuclid dump` (a scene's state as JSON Lines, one line a frame) and `noneuclid render`
 // (its last frame as a PNG, the run as an animated GIF).
-#include <algorithm>
 #include <cerrno>
 #include <cstdio>
-#include <cmath>
 #include <cstring>
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/gif_delays.hpp"
 #include "app/picture.hpp"
 #include "app/setup.hpp"
 
@@ -48,24 +47,17 @@ int dump_command(int argc, char** argv, int first) {
 
 namespace {
 // render --gif: the run's frames into an animated GIF, each shown for as long as the world time
-// it stands for (o.gif_every / 60 s at dt 1/60), in whole centiseconds that add up, at least 2
-// (what GIF viewers take as the shortest).
+// it stands for (app/gif_delays.hpp).
 class GifFrames final : public FrameSink {
 public:
-    GifFrames(std::unique_ptr<platform::GifWriter> gif, double seconds) : gif_(std::move(gif)), seconds_(seconds) {}
-    bool frame(const render::Canvas& c, long) override {
-        shown_ += seconds_ * 100;
-        const int cs = std::max(2, static_cast<int>(std::lround(shown_)) - given_);
-        given_ += cs;
-        return gif_->frame(c, cs, error_);
-    }
+    GifFrames(std::unique_ptr<platform::GifWriter> gif, double seconds) : gif_(std::move(gif)), delays_(seconds) {}
+    bool frame(const render::Canvas& c, long) override { return gif_->frame(c, delays_.next(), error_); }
     bool finish(std::string& error) { return gif_->finish(error); }
     const std::string& error() const { return error_; }
 
 private:
     std::unique_ptr<platform::GifWriter> gif_;
-    double seconds_, shown_ = 0;
-    int given_ = 0;
+    GifDelays delays_;
     std::string error_;
 };
 }  // namespace
@@ -100,6 +92,13 @@ int render_command(int argc, char** argv, int first) {
     const Options o = layered_options(argc, argv, first, Command::render, script);
     if (o.out.empty() && o.gif.empty())
         usage_error("render needs --out FILE.png or --gif FILE.gif: where to write the picture.");
+    check_outputs(o);
+    if (!o.gif.empty() && o.dt * static_cast<double>(o.gif_every) > kGifMaxFrameSeconds) {
+        char seconds[64];
+        std::snprintf(seconds, sizeof seconds, "%g", o.dt * static_cast<double>(o.gif_every));
+        usage_error("--gif-every " + std::to_string(o.gif_every) + ": each GIF frame would stand for " + seconds +
+                    " s of world time, over the 655.35 s a GIF frame can be shown: use a smaller --gif-every or --dt.");
+    }
     const world::Scene scene = load_scene(o);
     const platform::LoadedFont font = load_font(o);
     std::string error;

@@ -4,7 +4,9 @@
 // no #if. Declarations only: no OS header here.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,8 +30,9 @@ struct CpuTime {
 CpuTime cpu_time();
 // Whether standard error is a terminal (where a long run shows its progress).
 bool stderr_is_terminal();
-// At start: a write past the file-size limit (RLIMIT_FSIZE) fails with an error the program
-// reports, instead of SIGXFSZ ending it halfway through a file.
+// At start: a write past the file-size limit (RLIMIT_FSIZE), or into a pipe whose reader has
+// gone (`noneuclid dump | head`), fails with an error the program reports, instead of SIGXFSZ or
+// SIGPIPE ending it silently halfway through.
 void prepare_process();
 // From now on SIGINT, SIGTERM, SIGHUP and SIGQUIT ask the program to stop instead of ending it:
 // stop_signal() then says which came (0: none yet), and waits (poll, sleep) end early.
@@ -68,10 +71,26 @@ std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& err
 
 // ---- files ----------------------------------------------------------------------------------
 
+// What the program finds at a path, without following a symbolic link there (lstat).
+enum class FileKind { missing, regular, directory, symlink, fifo, device, socket, other };
+// "a directory", "a symbolic link", "a pipe (FIFO)", "a device", ...
+const char* file_kind_name(FileKind kind);
+
+// Whether an output file (--out, --gif, --record, --screenshot, demo's pictures) may be written
+// at `path`, decided as AtomicFile::open decides: nothing there yet, or a regular file (replaced
+// whole, keeping its mode); a FIFO, or this program's own standard output by any name
+// (/dev/stdout, /dev/fd/1), is written into. Anything else is never replaced nor written: a
+// directory, a device, a socket, a symbolic link. False with one sentence naming `path`.
+bool output_allowed(const std::string& path, std::string& error);
+
 // A file written whole or not at all (platform/posix/atomic_file.cpp): into a temporary file
 // beside `path`, then flushed, synced to the disk and renamed over `path` by commit(). Until
 // then `path` is untouched; abort(), a failed commit() or the destructor remove the temporary
-// file. A crash leaves at most a hidden temporary file (.NAME.XXXXXX), never a half-written NAME.
+// file. A replaced file keeps its permissions. A crash leaves at most a hidden temporary file
+// (.NAME.noneuclid-XXXXXX, locked while its writer lives), never a half-written NAME, and the
+// next write of NAME removes the ones whose writer is gone. A target output_allowed() refuses
+// is refused here too; a FIFO or the program's standard output is written into as a stream
+// (commit() flushes it; there is nothing to rename, and a failed write leaves what was written).
 class AtomicFile {
 public:
     AtomicFile() = default;
@@ -88,6 +107,37 @@ public:
 private:
     std::string path_, temp_;
     std::FILE* file_ = nullptr;
+    bool stream_ = false;  // written into (a FIFO, standard output): no temporary file
+};
+
+// Files the program keeps and shares between processes (the high-score table,
+// platform/posix/kept_file.cpp).
+//
+// Reads `path` whole if it is a regular file, at most `limit` + 1 bytes (so a caller can tell
+// a file over `limit`). A symbolic link is not followed and nothing but a regular file is
+// opened (a FIFO is never waited on). `kind` says what is there; false with one sentence (no
+// path, no full stop) in `error` when it is not a regular file or cannot be read.
+bool read_kept_file(const std::string& path, std::size_t limit, std::string& out, FileKind& kind, std::string& error);
+// Renames the regular file `path` to `path` + `suffix`, or if that exists to `path` + `suffix`
+// + ".2", ".3", ... (up to ".99"), never over an existing file. The name used in `aside`; false
+// with one sentence (no full stop) in `error`.
+bool set_aside(const std::string& path, const std::string& suffix, std::string& aside, std::string& error);
+// An exclusive lock (flock) on the directory of `path`, held while the object lives: the
+// processes that share a file there take turns to read, change and write it. Waited for up to
+// five seconds; then busy() is true and held() false. held() is false too when the directory
+// cannot be opened (the caller goes on unlocked).
+class DirectoryLock {
+public:
+    explicit DirectoryLock(const std::string& path);
+    ~DirectoryLock();
+    DirectoryLock(const DirectoryLock&) = delete;
+    DirectoryLock& operator=(const DirectoryLock&) = delete;
+    bool held() const { return fd_ >= 0; }
+    bool busy() const { return busy_; }
+
+private:
+    int fd_ = -1;
+    bool busy_ = false;
 };
 
 // The path of a file the program keeps between runs (the game's high scores): in the
@@ -117,7 +167,8 @@ bool read_texture(const std::string& path, world::Image& out, std::string& why);
 class GifWriter {
 public:
     virtual ~GifWriter() = default;
-    // Adds a frame shown for `centiseconds`; false with one sentence in `error`.
+    // Adds a frame shown for `centiseconds` (0 to 65535: a GIF's delay is 16 bits); false with
+    // one sentence in `error`.
     virtual bool frame(const render::Canvas& c, int centiseconds, std::string& error) = 0;
     virtual bool finish(std::string& error) = 0;
 };

@@ -29,6 +29,30 @@ std::string trim(const std::string& s) {
     return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
 }
 
+// The first byte of `s` that is a control character other than a tab, or npos.
+std::size_t first_control(const std::string& s) {
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if ((static_cast<unsigned char>(s[i]) < 0x20 && s[i] != '\t') || s[i] == 0x7F) return i;
+    return std::string::npos;
+}
+
+// An event's time: the whole word a decimal number >= 0 (digits, a point, an exponent), finite.
+// The whole word: strtod stops at a NUL, which must not end the word early ("1.5\0junk").
+bool read_time(const std::string& word, double& time) {
+    if (word.empty() || word.find_first_not_of("0123456789.eE+-") != std::string::npos) return false;
+    char* end = nullptr;
+    time = std::strtod(word.c_str(), &end);
+    return end == word.c_str() + word.size() && std::isfinite(time) && time >= 0;
+}
+
+// Words are parted by spaces and tabs only: a control byte between them (a vertical tab, a form
+// feed, a carriage return inside the line), which a reader splitting on any white space would
+// take for a space, is refused. (One inside a word makes that word wrong, and is said so.)
+std::string control_between(const std::string& content, std::size_t at) {
+    return "a control character (" + world::quote(content.substr(at, 1)) + ") where only spaces and tabs may part words: " +
+           world::quote(content);
+}
+
 std::string control_list() {
     std::string names;
     for (int i = 0; i < world::kControlCount; ++i) {
@@ -65,9 +89,12 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
         const std::string content = trim(raw.substr(0, raw.find('#')));
         std::istringstream words(content);
         std::string first;
-        if (!(words >> first)) continue;  // blank or comment
+        if (!(words >> first)) {  // blank or comment
+            if (const std::size_t at = first_control(content); at != std::string::npos) return fail(control_between(content, at));
+            continue;
+        }
         if (is_setting(first)) {
-            const std::string value = trim(content.substr(first.size()));
+            const std::string value = trim(content.substr(content.find(first) + first.size()));
             if (value.empty()) return fail("the setting '" + first + "' needs a value");
             // The value becomes an option's (and may be shown in its message, or written back
             // into a recording's line): text a terminal shows as it is, of a path's length.
@@ -77,12 +104,12 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
             if (!world::is_plain(value))
                 return fail("the setting '" + first + "' has a control character or a byte that is not UTF-8: " +
                             quote(value));
+            if (const std::size_t at = first_control(content); at != std::string::npos) return fail(control_between(content, at));
             out.settings.push_back({first, value, line});
             continue;
         }
-        char* end = nullptr;
-        const double time = std::strtod(first.c_str(), &end);
-        if (*end != '\0' || !std::isfinite(time) || time < 0) {
+        double time = 0;
+        if (!read_time(first, time)) {
             std::string keys;
             for (const char* const* k = kSettingKeys; *k; ++k) keys += std::string(keys.empty() ? "" : ", ") + *k;
             return fail("expected a time in seconds (a number >= 0) or a setting (" + keys + ") first, found " +
@@ -105,6 +132,7 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
                 return fail("expected a control (" + control_list() + "), found " + quote(what));
         }
         if (words >> extra) return fail("unexpected " + quote(extra) + " after " + quote(what));
+        if (const std::size_t at = first_control(content); at != std::string::npos) return fail(control_between(content, at));
         out.events.push_back(e);
     }
     std::stable_sort(out.events.begin(), out.events.end(),

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "app/commands.hpp"
 #include "world/budget.hpp"
@@ -65,7 +66,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     if (o.stats) rec.comment("the HUD's frame rate (--stats) is wall-clock time: a replay leaves it out");
 }
 
-std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
+std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play) {
     if (choice == "none") return nullptr;
     std::error_code ec;
     const std::filesystem::path dir = std::filesystem::path(choice).parent_path();
@@ -79,8 +80,23 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice) {
         return nullptr;
     }
     auto table = std::make_unique<HighScoreTable>(path);
-    std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", table->path().c_str(), table->best());
+    if (!table->load(play, error)) {
+        // A table named on the command line, or one to print, is the user's to fix; the state
+        // directory's is the kiosk's, which plays on without one.
+        if (!choice.empty() || !play) usage_error(error);
+        std::fprintf(stderr, "noneuclid: the high scores are not kept: %s\n", error.c_str());
+        return nullptr;
+    }
+    std::fprintf(stderr, "noneuclid: high scores in %s (best %ld).\n", world::quote(table->path(), world::kPathLimit).c_str(), table->best());
     return table;
+}
+
+void check_outputs(const Options& o) {
+    const std::pair<const char*, const std::string*> outputs[] = {
+        {"--out", &o.out}, {"--gif", &o.gif}, {"--record", &o.record}, {"--screenshot", &o.screenshot}};
+    std::string error;
+    for (const auto& [option, path] : outputs)
+        if (!path->empty() && !platform::output_allowed(*path, error)) usage_error(std::string(option) + ": " + error);
 }
 
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {
@@ -90,7 +106,9 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.draw.line_width = static_cast<int32_t>(o.line_width * render::kSub + 0.5);
     so.hud = o.hud;
     so.show_fps = o.stats;
-    so.scene_name = scene.name;
+    // A scene file by its name alone: the HUD shows the same words however the path was spelt
+    // (typed relative in a run, absolute in its recording), so a replay draws the same pixels.
+    so.scene_name = std::filesystem::path(scene.name).filename().string();
     so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
     so.attract.idle_seconds = o.attract;
     so.attract.sweep_seconds = o.sweep;

@@ -29,9 +29,16 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
                      const render::PixelFormat& format);
 // The high-score table of a game (app/high_scores.hpp): the file `choice` names, or "" for the
 // state directory's "scores" (platform::state_file); null for "none", or when there is no state
-// directory (said in one line on stderr). Says where the table is, in one line. A file in a
-// directory that does not exist is a UsageError.
-std::unique_ptr<HighScoreTable> open_scores(const std::string& choice);
+// directory (said in one line on stderr). Says where the table is, in one line. `play`: the
+// game's own use, which sets a damaged table aside; else (`noneuclid scores`) it is only read.
+// A file in a directory that does not exist, and a path that holds no table the game can use
+// (anything it did not write; with !play a damaged table too) are a UsageError, except the
+// state directory's in `run`, which is said in one line and not kept (the kiosk plays on).
+std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play);
+// Refuses (a UsageError, before any work) an output path that must not be written
+// (platform::output_allowed: a directory, a device, a symbolic link): --out, --gif, --record
+// and --screenshot.
+void check_outputs(const Options& o);
 // The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
 

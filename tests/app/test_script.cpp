@@ -8,6 +8,7 @@ using namespace std::string_literals;
 
 #include "app/options.hpp"
 #include "app/script.hpp"
+#include "world/quote.hpp"
 
 namespace {
 
@@ -135,6 +136,49 @@ TEST(Script, FileContentInMessagesIsQuoted) {
     // The file's own name, which came from the command line, is shown escaped too.
     EXPECT_FALSE(app::load_script("/nonexistent/\x1b[2J.txt", s, err));
     EXPECT_EQ(err.to_string().rfind("/nonexistent/\\x1b[2J.txt: the actions file: cannot read it", 0), 0u) << err.to_string();
+}
+
+// An event's time is its whole first word, a decimal number: a NUL or another control byte in it
+// (where strtod would stop and take what came before) is refused, and so is a control byte
+// that a reader splitting on any white space would take for a space between the words.
+TEST(Script, AControlByteInAnEventIsRefusedNotReadPast) {
+    struct Case {
+        std::string text;
+        std::string message;  // the whole sentence after "c.txt:1: "
+    };
+    const std::string expected_time = "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
+                                      "projection, size, format, aa, hud, font, legend, frames, best) first, found ";
+    const Case cases[] = {
+        {"1.5\0 press thrust\n"s, expected_time + "'1.5\\x00'"},
+        {"1.5\0junk press thrust\n"s, expected_time + "'1.5\\x00junk'"},
+        {"\0 press thrust\n"s, expected_time + "'\\x00'"},
+        {"1\x01 press thrust\n", expected_time + "'1\\x01'"},
+        {"2\x1b[31m press thrust\n", expected_time + "'2\\x1b[31m'"},
+        {"3\x7f press thrust\n", expected_time + "'3\\x7f'"},
+        {"0x1p3 press thrust\n", expected_time + "'0x1p3'"},  // a decimal number, not C's hexadecimal
+        {"1.5\vpress thrust\n", "a control character ('\\x0b') where only spaces and tabs may part words: '1.5\\x0bpress thrust'"},
+        {"1.5 press\fthrust\n", "a control character ('\\x0c') where only spaces and tabs may part words: '1.5 press\\x0cthrust'"},
+        {"1.5 press\rthrust\n", "a control character ('\\x0d') where only spaces and tabs may part words: '1.5 press\\x0dthrust'"},
+        {"\x0bscene kiosk\n", "a control character ('\\x0b') where only spaces and tabs may part words: '\\x0bscene kiosk'"},
+        {"\x0c\n", "a control character ('\\x0c') where only spaces and tabs may part words: '\\x0c'"},
+    };
+    for (const Case& c : cases) {
+        Script s;
+        ScriptError err;
+        ASSERT_FALSE(app::parse_script(c.text, "c.txt", s, err)) << world::printable(c.text, 80);
+        EXPECT_EQ(err.to_string(), "c.txt:1: " + c.message);
+    }
+    // What stays accepted: decimal times of every spelling, tabs between words, CR LF line ends,
+    // and any bytes in a comment.
+    Script s;
+    ScriptError err;
+    ASSERT_TRUE(app::parse_script("0 press thrust\r\n.5\trelease thrust\n1e0 tap preset # \x01\x1b\n2.25E+0 tap hud\n"s,
+                                  "c.txt", s, err))
+        << err.to_string();
+    ASSERT_EQ(s.events.size(), 4u);
+    EXPECT_EQ(s.events[1].time, 0.5);
+    EXPECT_EQ(s.events[2].time, 1.0);
+    EXPECT_EQ(s.events[3].time, 2.25);
 }
 
 TEST(Script, ThePlayerGivesEventsWhenDue) {

@@ -1,11 +1,17 @@
 # `noneuclid run --display png --record R` (the headless display, keys from an actions file),
 # then `noneuclid render --actions R`: the same picture, pixel for pixel (png_diff --exact).
-#   cmake -DNONEUCLID=... -DPNG_DIFF=... -DSCENE=... -DACTIONS=... -DDIR=... -P record_replay.cmake
+# With -DRUN_DIR=D the run is made in D (SCENE then a path relative to it, as typed there) and
+# replayed from DIR: the recording names the scene so that it replays anywhere, and the HUD (on in
+# a run) shows the same words in both.
+#   cmake -DNONEUCLID=... -DPNG_DIFF=... -DSCENE=... -DACTIONS=... -DDIR=... [-DRUN_DIR=...] -P record_replay.cmake
 file(MAKE_DIRECTORY ${DIR})
 set(rec ${DIR}/recording.txt)
+if(NOT DEFINED RUN_DIR)
+    set(RUN_DIR ${DIR})
+endif()
 execute_process(COMMAND ${NONEUCLID} run --display png --scene ${SCENE} --actions ${ACTIONS} --frames 150
                         --size 400x300 --aa --record ${rec} --screenshot ${DIR}/run.png
-                RESULT_VARIABLE rc ERROR_VARIABLE err)
+                WORKING_DIRECTORY ${RUN_DIR} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "run failed (${rc}): ${err}")
 endif()
@@ -17,7 +23,7 @@ foreach(want "scene " "aa on" "size 400x300" "frames 150" "press thrust")
     endif()
 endforeach()
 execute_process(COMMAND ${NONEUCLID} render --actions ${rec} --out ${DIR}/replay.png
-                RESULT_VARIABLE rc ERROR_VARIABLE err)
+                WORKING_DIRECTORY ${DIR} RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
     message(FATAL_ERROR "render failed (${rc}): ${err}")
 endif()

@@ -174,8 +174,29 @@ void board(std::string_view input) {
     }
 }
 
+namespace {
+
+// Whether an actions file the parser accepted has a control byte (NUL included) anywhere but in
+// a comment, a tab, or the ends of a line (CR, LF): it must have none (app/script.hpp).
+bool control_outside_comments(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    while (!text.empty()) {
+        const std::size_t end = std::min(text.find('\n'), text.size());
+        std::string_view line = text.substr(0, end);
+        text.remove_prefix(std::min(end + 1, text.size()));
+        line = line.substr(0, line.find('#'));
+        while (!line.empty() && (line.front() == ' ' || line.front() == '\t' || line.front() == '\r')) line.remove_prefix(1);
+        while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.remove_suffix(1);
+        for (const char c : line)
+            if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7F) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
 void actions(std::string_view input) {
-    const std::string text(input);
+    const std::string text(input);  // every byte, NUL included
     app::Script s;
     app::ScriptError e;
     if (!app::parse_script(text, "a.txt", s, e)) {
@@ -189,6 +210,7 @@ void actions(std::string_view input) {
         FUZZ_CHECK(s.events[i].control != world::Control::quit, "quit replayed");
     }
     for (const app::Setting& st : s.settings) FUZZ_CHECK(world::is_plain(st.value) && !st.value.empty(), st.value);
+    FUZZ_CHECK(!control_outside_comments(input), "a control byte accepted: " + text);
 }
 
 void world(std::string_view input) {

@@ -106,4 +106,17 @@ install). The unit is not enabled: sudo systemctl enable --now noneuclid.")
 # (Debian's foreign-architecture packages, e.g. libpng-dev:arm64), as a native build's in its own.
 set(CPACK_PROJECT_CONFIG_FILE ${noneuclid_pkg_out}/cpack-env.cmake)
 file(WRITE ${CPACK_PROJECT_CONFIG_FILE} "set(ENV{DEB_HOST_ARCH} ${NONEUCLID_DEB_ARCH})\n")
+# A package installs under /usr, where the paths compiled into the program, its unit and the
+# maintainer scripts must point: a build for another prefix (a default build directory's
+# /usr/local) makes none. `cpack -G DEB` there stops with the reason (cpack reads this file
+# before it packs anything; tests/cli: cli_cpack_needs_usr).
+if(NOT CMAKE_INSTALL_PREFIX STREQUAL "/usr")
+    file(APPEND ${CPACK_PROJECT_CONFIG_FILE} "if(CPACK_GENERATOR STREQUAL \"DEB\")
+    message(FATAL_ERROR \"noneuclid: this build directory installs under ${CMAKE_INSTALL_PREFIX}, and a Debian \"
+        \"package installs under /usr (the paths compiled into the program, its unit and its scripts are the \"
+        \"package's): configure a build with -DCMAKE_INSTALL_PREFIX=/usr, or use the amd64, arm64 or armhf preset \"
+        \"(platform/debian/build-packages).\")
+endif()
+")
+endif()
 include(CPack)

@@ -2,6 +2,7 @@
 // files written by the test and loaded back pixel for pixel, every bad file named in one
 // sentence, and the HUD's choice of font ($NONEUCLID_FONT, the console fonts, the built-in one).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <zlib.h>
 
 #include <cstdint>
@@ -106,11 +107,35 @@ TEST(FontConsole, ErrorsNameTheFile) {
         << error;
 
     EXPECT_FALSE(load_console_font(dir.path.string(), f, error));  // a directory
-    EXPECT_EQ(error.rfind(dir.path.string() + ": cannot read the font file (", 0), 0u) << error;
+    EXPECT_EQ(error, dir.path.string() + ": the font file is a directory, not a file") << error;
+    EXPECT_FALSE(load_console_font("/dev/null", f, error));  // a device
+    EXPECT_EQ(error, "/dev/null: the font file is a device, not a file") << error;
 
     EXPECT_EQ(error.find('\n'), std::string::npos);
     EXPECT_TRUE(f.bytes.empty());
     EXPECT_EQ(f.font.glyphs, nullptr);
+}
+
+// A FIFO named as a font (--font, $NONEUCLID_FONT, a recording's font) is refused at once: a
+// read would wait for a writer that may never come. (Were it waited on, this test would hang
+// until ctest's timeout ends it as failed.)
+TEST(FontConsole, AFifoIsRefusedNotWaitedOn) {
+    TempDir dir;
+    const std::string fifo = dir.file("font.psf");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    LoadedFont f;
+    std::string error, note;
+    EXPECT_FALSE(load_console_font(fifo, f, error));
+    EXPECT_EQ(error, fifo + ": the font file is a pipe (FIFO), not a file (it is not waited on)");
+    EXPECT_FALSE(noneuclid::platform::hud_font(fifo, f, error));
+    EXPECT_EQ(error.rfind(fifo + ": the font file is a pipe (FIFO)", 0), 0u) << error;
+    ASSERT_EQ(setenv("NONEUCLID_FONT", fifo.c_str(), 1), 0);
+    TempDir empty;
+    f = default_hud_font(&note, empty.path.string());
+    ASSERT_EQ(unsetenv("NONEUCLID_FONT"), 0);
+    EXPECT_EQ(f.source, "built-in 6x8");
+    EXPECT_NE(note.find("since NONEUCLID_FONT is unusable (" + fifo + ": the font file is a pipe (FIFO)"), std::string::npos)
+        << note;
 }
 
 TEST(FontConsole, HudFontChoice) {

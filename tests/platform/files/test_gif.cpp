@@ -75,6 +75,38 @@ TEST(Gif, FramesAndDelaysReadBackExactly) {
     EXPECT_EQ(others(dir, "a.gif"), 0);  // no temporary file left
 }
 
+// A GIF frame's delay is 16 bits: 65535 centiseconds (655.35 s) is written and read back as it
+// is; 65536 would wrap to 0 and is refused with one sentence, the target left as it was.
+TEST(Gif, ADelayPastSixteenBitsIsRefusedNotWrapped) {
+    const TempDir tmp;
+    const std::string path = (tmp.path / "long.gif").string();
+    std::vector<uint32_t> px(kW * kH);
+    const render::Canvas c(reinterpret_cast<uint8_t*>(px.data()), kW, kH, kW * 4, render::PixelFormat::xrgb8888());
+    paint(c, 2);
+    std::string error;
+    auto gif = platform::open_gif(path, kW, kH, error);
+    ASSERT_TRUE(gif) << error;
+    ASSERT_TRUE(gif->frame(c, 65535, error)) << error;
+    ASSERT_TRUE(gif->finish(error)) << error;
+    int w = 0, h = 0;
+    std::vector<platform::GifFrame> frames;
+    ASSERT_TRUE(platform::read_gif(path, w, h, frames, error)) << error;
+    ASSERT_EQ(frames.size(), 1u);
+    EXPECT_EQ(frames[0].centiseconds, 65535);
+
+    { std::ofstream(path) << "the earlier file"; }
+    gif = platform::open_gif(path, kW, kH, error);
+    ASSERT_TRUE(gif) << error;
+    EXPECT_FALSE(gif->frame(c, 65536, error));
+    EXPECT_NE(error.find("a frame's delay of 65536 centiseconds is past the 655.35 s"), std::string::npos) << error;
+    gif.reset();
+    std::ifstream in(path);
+    std::string text;
+    std::getline(in, text);
+    EXPECT_EQ(text, "the earlier file");
+    EXPECT_EQ(others(tmp.path, "long.gif"), 0);
+}
+
 TEST(Gif, AMissingDirectoryIsOneSentenceAndLeavesNothing) {
     std::string error;
     EXPECT_FALSE(platform::open_gif("/nonexistent/dir/x.gif", kW, kH, error));
