@@ -36,6 +36,7 @@ struct Motion {
 template <class T>
 struct MotionApply {
     explicit MotionApply(const Motion<T>& m) : M(m) {}
+    explicit MotionApply(Motion<T>&&) = delete;  // it keeps a reference: not to a temporary
     Vec3<T> operator()(const Vec3<T>& L) const { return M(L); }
     void operator()(const Vec3<T>* L, Vec3<T>* out, std::size_t n) const {
         for (std::size_t i = 0; i < n; ++i) out[i] = M(L[i]);
@@ -46,6 +47,7 @@ template <>
 struct MotionApply<fixed> {
     static constexpr int64_t kLim = int64_t{1} << 30;  // 2^14 in Q16.16
     static bool below(fixed v) { return static_cast<uint64_t>(v.raw() + kLim) < uint64_t{2 * kLim}; }
+    explicit MotionApply(Motion<fixed>&&) = delete;  // it keeps a reference: not to a temporary
     explicit MotionApply(const Motion<fixed>& m) : M(m) {
         for (const auto& row : m.m)
             for (fixed v : row) small = small && below(v);

@@ -75,7 +75,8 @@ void rigid_outline(T K, const B& b, ShapeCache<T>& cache, const ScreenMap<T>& m,
     const std::size_t n = b.local.size();
     const std::size_t edges = n < 2 ? 0 : (b.closed() ? n : n - 1);
     const ShapeCache<T>& sh = cache.refresh(K, b);
-    const MotionApply<T> apply(body_motion(K, b.centre, b.facing));
+    const Motion<T> motion = body_motion(K, b.centre, b.facing);  // (MotionApply keeps a reference to it)
+    const MotionApply<T> apply(motion);
     apply(sh.local.data(), vecs, n);
     const bool straight = straight_geodesics(K, p);
     with_view_eval(K, m, p, [&](const auto& ev) { detail::body_curve(ev, m, K, sh, vecs, n, edges, straight, sink); });
