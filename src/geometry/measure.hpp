@@ -33,6 +33,33 @@
 
 namespace noneuclid::geo {
 
+// The instruments, in the order a button cycles them.
+enum class Instrument { triangle, circle, parallels, polygon };
+inline constexpr Instrument kInstruments[] = {Instrument::triangle, Instrument::circle, Instrument::parallels,
+                                              Instrument::polygon};
+inline const char* instrument_name(Instrument i) {
+    constexpr const char* names[] = {"triangle", "circle", "parallels", "polygon"};
+    return names[static_cast<int>(i)];
+}
+inline const char* instrument_help(Instrument i) {
+    constexpr const char* help[] = {
+        "three marks joined by geodesics: its angles, their sum and excess, the area, K times the area",
+        "a centre and a radius: the circumference and the area against the flat ones",
+        "two geodesics leaving a common perpendicular: how far apart they are further on",
+        "q regular p-gons around a vertex: the gap or overlap, and the K at which they close"};
+    return help[static_cast<int>(i)];
+}
+// The instrument named `name`; false if none is.
+inline bool parse_instrument(const char* name, Instrument& out) {
+    for (Instrument i : kInstruments) {
+        const char* a = instrument_name(i);
+        const char* b = name;
+        while (*a && *a == *b) ++a, ++b;
+        if (!*a && !*b) return out = i, true;
+    }
+    return false;
+}
+
 enum class MeasureError {
     none,
     outside,        // a mark lies past the limit circle
