@@ -5,6 +5,7 @@
 
 #include "app/recorder.hpp"
 #include "render/hud.hpp"
+#include "render/measure_panel.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/worker_pool.hpp"
 
@@ -91,6 +92,10 @@ public:
     }
 
     void draw_hud(const render::Canvas& c) override {
+        // The instruments' readings, with the HUD or without: they are the instruments' faces.
+        int side = 0;
+        for (const auto& g : world_.gauges())
+            if (g.on() && side < 2) render::draw_measure_panel(c, font_, render::measure_panel(g.reading()), side++);
         if (!options_.hud) return;
         render::HudInfo info;
         info.K = static_cast<double>(world_.K);

@@ -121,6 +121,18 @@ void asteroids(Scene& s) {
     s.game.on = true;
     add_game_slots(s, unused);  // the kiosk's ship and the default settings always fit
 }
+// The instruments (world/instruments.hpp): a triangle about O measured while the ship flies
+// over the axis grid; the instrument button turns on the live one and fire drops its marks.
+void measure(Scene& s) {
+    s.curvature = 0;
+    std::string unused;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, {45, 58, 80}, unused);
+    s.bodies.push_back(place(ship(), 1.6, -90, 90, 0, 90, 0));
+    MeasureDecl triangle;
+    triangle.kind = geo::Instrument::triangle;
+    triangle.marks = {{1.2, 90}, {1.2, 210}, {1.2, 330}};
+    s.measures.push_back(triangle);
+}
 // Five textured bodies about 60 px across on the kiosk's 800x480 screen (0.4 from their
 // centres: 61 px at K = 0), in the built-in images, and one filled: a hexagon, an irregular
 // asteroid, a square, a five-pointed star, a thick "C" that is not star-shaped about its centre
@@ -249,6 +261,8 @@ const SceneRow kScenes[] = {
     {"kiosk", "the kiosk's: a ship, four drifting bodies and the grid", [](Scene& s, const SceneParams&) { kiosk(s); }},
     {"asteroids", "the game: Asteroids in curved space, K turning each level", [](Scene& s, const SceneParams&) { asteroids(s); }},
     {"textured", "textured and filled bodies that bend with K", [](Scene& s, const SceneParams&) { textured(s); }},
+    {"measure", "instruments: a triangle's angles and area while K changes; the instrument button measures more",
+     [](Scene& s, const SceneParams&) { measure(s); }},
     {"fig1", "the paper's figure 1: a body and its geodesic edges", [](Scene& s, const SceneParams&) { fig1(s); }},
     {"fig14", "the paper's figure 14: a body moving along a geodesic at 90 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 90); }},
     {"fig15", "the paper's figure 15: a body moving along a geodesic at 45 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 45); }},
