@@ -20,6 +20,7 @@
 #include <string>
 
 #include "geometry/measure.hpp"
+#include "world/instruments.hpp"
 
 namespace noneuclid::files {
 
@@ -134,6 +135,23 @@ inline void append_polygon_json(std::string& out, double K, int p, int q, double
     field(out, "gap", r.gap_deg);
     field(out, "closing_K", r.closing_K);
     out += '}';
+}
+
+// A world's gauge (world/instruments.hpp): its instrument's object, or, while a live one waits
+// for marks, {"instrument":...,"K":k,"waiting":true,"marks":n,"needed":m}.
+inline void append_gauge_json(std::string& out, const world::GaugeReading& r) {
+    using namespace measure_detail;
+    if (r.waiting) {
+        head(out, r.kind, r.K);
+        out += ",\"waiting\":true,\"marks\":" + std::to_string(r.marks) + ",\"needed\":" + std::to_string(r.needed) + "}";
+        return;
+    }
+    switch (r.kind) {
+        case geo::Instrument::triangle: return append_triangle_json(out, r.K, r.points, r.error, r.triangle);
+        case geo::Instrument::circle: return append_circle_json(out, r.K, r.points[0], r.radius, r.error, r.circle);
+        case geo::Instrument::parallels: return append_parallels_json(out, r.K, r.distance, r.length, r.error, r.parallels);
+        case geo::Instrument::polygon: return append_polygon_json(out, r.K, r.sides, r.around, r.side, r.error, r.polygon);
+    }
 }
 
 }  // namespace noneuclid::files

@@ -41,39 +41,40 @@ MeasurePanel measure_panel(const world::GaugeReading& r) {
         return p;
     }
     if (r.error != geo::MeasureError::none) {
-        sentence(p, geo::measure_error_sentence(r.error), 10);
+        sentence(p, geo::measure_error_sentence(r.error), 11);
         return p;
     }
     switch (r.kind) {
         case geo::Instrument::triangle:
-            for (int i = 0; i < 3; ++i) line(p, "%c %7.2f", 'A' + i, r.triangle.angle_deg[i]);
-            line(p, "sum%7.2f", r.triangle.sum_deg);
-            line(p, "exc%7.2f", r.triangle.excess_deg);
-            line(p, "area%6.3f", r.triangle.area);
-            line(p, "K*A%7.2f", r.triangle.k_area_deg);
+            for (int i = 0; i < 3; ++i) line(p, "%c    %6.2f", 'A' + i, r.triangle.angle_deg[i]);
+            line(p, "sum  %6.2f", r.triangle.sum_deg);
+            line(p, "exc  %6.2f", r.triangle.excess_deg);
+            line(p, "area %6.3f", r.triangle.area);
+            line(p, "K*A  %6.2f", r.triangle.k_area_deg);
             break;
         case geo::Instrument::circle:
-            line(p, "r %8.3f", r.radius);
-            line(p, "C %8.3f", r.circle.circumference);
-            line(p, "2pr%7.3f", r.circle.flat_circumference);
-            line(p, "C/2pr%5.3f", r.circle.circumference_ratio);
-            line(p, "A %8.3f", r.circle.area);
-            line(p, "A/pr2%5.3f", r.circle.area_ratio);
+            line(p, "r    %6.3f", r.radius);
+            line(p, "C    %6.3f", r.circle.circumference);
+            line(p, "C0   %6.3f", r.circle.flat_circumference);
+            line(p, "C/C0 %6.3f", r.circle.circumference_ratio);
+            line(p, "A    %6.3f", r.circle.area);
+            line(p, "A0   %6.3f", r.circle.flat_area);
+            line(p, "A/A0 %6.3f", r.circle.area_ratio);
             break;
         case geo::Instrument::parallels:
-            line(p, "d %8.3f", r.distance);
-            line(p, "s %8.3f", r.length);
-            line(p, "apart%5.3f", r.parallels.distance);
-            line(p, "ratio%5.3f", r.parallels.ratio);
-            if (r.parallels.meet) line(p, "meet%6.3f", r.parallels.meet_at);
+            line(p, "d     %5.3f", r.distance);
+            line(p, "s     %5.3f", r.length);
+            line(p, "apart %5.3f", r.parallels.distance);
+            line(p, "ratio %5.3f", r.parallels.ratio);
+            if (r.parallels.meet) line(p, "meet  %5.3f", r.parallels.meet_at);
             break;
         case geo::Instrument::polygon:
             line(p, "%d x {%d}", r.around, r.sides);
-            line(p, "a %8.3f", r.side);
-            line(p, "ang%7.2f", r.polygon.angle_deg);
-            line(p, "%s%6.2f", r.polygon.gap_deg >= 0 ? "gap " : "over", r.polygon.gap_deg >= 0 ? r.polygon.gap_deg : -r.polygon.gap_deg);
+            line(p, "a    %6.3f", r.side);
+            line(p, "ang  %6.2f", r.polygon.angle_deg);
+            line(p, "%s %6.2f", r.polygon.gap_deg >= 0 ? "gap " : "over", r.polygon.gap_deg >= 0 ? r.polygon.gap_deg : -r.polygon.gap_deg);
             line(p, "closes at");
-            line(p, "K %+7.3f", r.polygon.closing_K);
+            line(p, "K   %+7.3f", r.polygon.closing_K);
             break;
     }
     return p;
@@ -82,9 +83,9 @@ MeasurePanel measure_panel(const world::GaugeReading& r) {
 void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color, Rgb dim) {
     const int disc = std::min(c.width(), c.height());
     const int room = (c.width() - disc) / 2;
-    const int scale = room >= 10 * 2 * font.width && c.height() >= 10 * 2 * font.height ? 2 : 1;
+    const int scale = room >= 11 * 2 * font.width && c.height() >= 10 * 2 * font.height ? 2 : 1;
     const int line_height = font.height * scale + scale * 2;
-    const int width = 10 * font.width * scale;
+    const int width = 11 * font.width * scale;
     const int x = side == 0 ? c.width() - width - std::max(0, (room - width) / 2) : std::max(0, (room - width) / 2);
     int y = (c.height() - p.lines * line_height) / 2;
     for (int i = 0; i < p.lines; ++i, y += line_height) draw_text(c, font, x, y, p.text[i], i == 0 ? dim : color, scale);
