@@ -147,6 +147,13 @@ public:
         update_gauges();
     }
 
+    // A mark of the live instrument at `at` (a tap on the web page), turning it on if it is off.
+    void place_mark(Polar<T> at) {
+        if (!measuring()) gauges_.back().cycle();
+        gauges_.back().drop(at);
+        update_gauges();
+    }
+
     // The instruments: the scene's, then the live one (last).
     const std::vector<Gauge<T>>& gauges() const { return gauges_; }
     // Whether the live instrument is on (fire drops marks).
