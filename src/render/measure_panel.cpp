@@ -83,6 +83,7 @@ MeasurePanel measure_panel(const world::GaugeReading& r) {
 void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color, Rgb dim) {
     const int disc = std::min(c.width(), c.height());
     const int room = (c.width() - disc) / 2;
+    if (room < 8 * font.width) return;  // no room beside the disc (a square picture): the dump has the numbers
     const int scale = room >= 11 * 2 * font.width && c.height() >= 10 * 2 * font.height ? 2 : 1;
     const int line_height = font.height * scale + scale * 2;
     const int width = 11 * font.width * scale;

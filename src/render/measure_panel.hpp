@@ -2,7 +2,8 @@
 // instrument that is on, beside the disc (the first on the right, the next on the left), in the
 // HUD's font at twice its size where the side has room (on the kiosk's 800x480, characters 32
 // pixels tall: legible from two metres). A construction the instrument cannot measure shows its
-// sentence, never a NaN. Allocates nothing.
+// sentence, never a NaN. Nothing where the sides have no room for it (a square picture).
+// Allocates nothing.
 #pragma once
 
 #include "render/canvas.hpp"
