@@ -204,6 +204,7 @@ private:
                 v.ship_speed = static_cast<double>(b.speed);
                 break;
             }
+        v.measuring = world_.measuring();
         const auto& g = world_.game();
         v.game = g.on();
         if (v.game) {
