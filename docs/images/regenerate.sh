@@ -12,6 +12,8 @@
 #                frame every 2 s over the last frame's grid
 # kiosk-k1.png   the kiosk scene at K = +1 (the antipode is the rim), anti-aliased, 800x480
 # fig17.png      the demo's figure 17: K swept from -1 to +1, the grid at each sampled K
+# measure-triangle.png  the measure scene's triangle and its readings at K = -1, 0 and +1
+# fig2.png, fig4.png  the demo's figures 2 (lines that start parallel) and 4 (a {7,3} tiling)
 # projections-k1.png, projections-k-1.png  the kiosk scene in the five projections at K = +1
 #                and -1 (equidistant, stereographic, gnomonic, orthographic, Lambert), 320x320 each
 set -euo pipefail
@@ -25,7 +27,7 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$nc" demo --no-hud --out-dir "$tmp/demo" >/dev/null
-cp "$tmp/demo/fig17.png" docs/images/fig17.png
+cp "$tmp/demo/fig17.png" "$tmp/demo/fig2.png" "$tmp/demo/fig4.png" docs/images/
 "$nc" render --actions docs/images/game.actions --frames 570 --out docs/images/game.png
 "$nc" run --display png --scene asteroids --attract 0.5 --frames 1800 --aa --scores none --record "$tmp/game.rec" \
     --screenshot "$tmp/game-last.png"
@@ -93,3 +95,8 @@ for k in -1 -0.5 0 0.5 1; do
 done
 python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t0.png" "$tmp/t1.png" docs/images/textured.png
 python3 "$tmp/join.py" "$tmp/t-1.png" "$tmp/t-0.5.png" "$tmp/t0.png" "$tmp/t0.5.png" "$tmp/t1.png" docs/images/textured-sweep.png
+# The measure scene's triangle at K = -1, 0, +1, its readings beside it.
+for k in -1 0 1; do
+    "$nc" render --scene measure --frames 0 --aa --font builtin --size 560x360 --curvature "$k" --out "$tmp/m$k.png"
+done
+python3 "$tmp/join.py" "$tmp/m-1.png" "$tmp/m0.png" "$tmp/m1.png" docs/images/measure-triangle.png

@@ -80,7 +80,7 @@ constexpr Key kKeys[] = {
     {"-", "curvature_down"},     {"[", "curvature_down"}, {"1", "hyperbolic"},    {"2", "flat"},
     {"3", "spherical"},          {"p", "projection"},     {"P", "projection"},    {"h", "hud"},
     {"H", "hud"},                {"r", "reset"},          {"R", "reset"},         {" ", "fire"},
-    {"Escape", "quit"},
+    {"m", "instrument"},         {"M", "instrument"},     {"Escape", "quit"},
 };
 
 bool running() { return g_run && !g_run->done; }
@@ -143,6 +143,14 @@ EMSCRIPTEN_KEEPALIVE int nw_control(const char* name) {
 EMSCRIPTEN_KEEPALIVE void nw_input(int control, int pressed) {
     if (!noneuclid::web::running() || control < 0 || control >= noneuclid::world::kControlCount) return;
     g_run->display->queue({static_cast<noneuclid::world::Control>(control), pressed != 0});
+}
+
+// A tap on the canvas at pixel (x, y): a mark of the live instrument there (turned on if it
+// was off; world/instruments.hpp). 0 where the canvas shows no point of the world.
+EMSCRIPTEN_KEEPALIVE int nw_mark(double x, double y) {
+    if (!noneuclid::web::running()) return 0;
+    const noneuclid::render::Canvas c = g_run->display->canvas();
+    return g_run->live.session->mark_at(x, y, c.width(), c.height()) ? 1 : 0;
 }
 
 // The control a key (KeyboardEvent.key) stands for, or -1.

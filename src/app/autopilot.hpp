@@ -11,7 +11,9 @@
 // `cruise_speed` (the world has no drag, so thrusting on a timer would speed up for ever).
 // In a game it plays instead of turning on a timer: it turns toward the nearest asteroid,
 // holds fire while that one is within a few degrees of the nose and in range, and holds fire
-// on the "press fire" screen to start the next game.
+// on the "press fire" screen to start the next game. Outside a game it measures: it turns the
+// live instrument on (a triangle, world/instruments.hpp) and drops a mark where the ship is
+// every few seconds, so the triangle's angles and area are read while K sweeps.
 #pragma once
 
 #include <cmath>
@@ -27,6 +29,7 @@ struct AttractOptions {
     double idle_seconds = 120;  // 0: never
     double sweep_seconds = 40;  // K from -1 to +1
     double cruise_speed = 0.25; // world units per second
+    double mark_seconds = 5;    // outside a game: a mark of the live triangle this often (after each turn)
 };
 
 // What the autopilot sees of the world each frame.
@@ -38,6 +41,7 @@ struct PilotView {
     bool target = false;      // an asteroid to aim at (and a ship to aim with)
     double aim = 0;           // its direction from the ship's nose, radians counter-clockwise
     double distance = 0;      // and its distance
+    bool measuring = false;   // the live instrument is on
     double range = 0;         // how far a bullet flies
 };
 
@@ -74,7 +78,7 @@ public:
         const double K = v.K;
         if (!active_) {
             if (!engage_ && (o_.idle_seconds <= 0 || t - last_input_ < o_.idle_seconds)) return 0;
-            active_ = true, engage_ = false, since_ = t, accumulator_ = 0;
+            active_ = true, engage_ = false, since_ = t, accumulator_ = 0, next_mark_ = o_.mark_seconds;
             dir_ = K >= 1 - 1e-6 ? -1 : 1;
         }
         const double tt = t - since_;
@@ -95,6 +99,12 @@ public:
             n += set(Control::fire, aimed || (v.ready && !held_[slot(Control::fire)]), out + n);
         } else {
             n += set(Control::left, std::fmod(tt, 5.0) >= 4.4, out + n);
+            if (v.ship_speed < 1e9) {  // a ship to drop the marks
+                if (!v.measuring) out[n++] = {Control::instrument, true}, out[n++] = {Control::instrument, false};
+                const bool mark = tt >= next_mark_;
+                if (mark) next_mark_ += o_.mark_seconds;
+                n += set(Control::fire, mark, out + n);
+            }
         }
         n += set(Control::thrust, v.ship_speed < o_.cruise_speed, out + n);
         return n;
@@ -126,7 +136,7 @@ private:
     AttractOptions o_;
     double rate_ = 0.5;
     bool active_ = false, engage_ = false;
-    double last_input_ = 0, since_ = 0, accumulator_ = 0;
+    double last_input_ = 0, since_ = 0, accumulator_ = 0, next_mark_ = o_.mark_seconds;
     int dir_ = 1;
     bool held_[kHeldCount] = {};
 };

@@ -16,11 +16,13 @@ int accuracy_command(int argc, char** argv, int first);
 int buttons_command(int argc, char** argv, int first);
 int scores_command(int argc, char** argv, int first);
 int scenes_command(int argc, char** argv, int first);
+int measure_command(int argc, char** argv, int first);
 
 struct CommandRow {
     Command command;
     const char* name;
     const char* summary;  // one line for --help
+    const char* usage;    // what follows the command's name in its usage line
     int (*run)(int argc, char** argv, int first);
 };
 extern const CommandRow kCommands[kCommandCount];

@@ -21,6 +21,7 @@ struct Figure {
     bool own_K = false;       // one panel at the scene's own K (and no label of it)
     long grid_trail = 0;      // and every this-many-th frame's grid over the earlier ones (0: none)
     const char* label = nullptr;  // the panel's label instead of "K = ..."
+    const char* projection = "equidistant";  // the view (geo::ProjectionTable's name)
 };
 
 extern const Figure kFigures[];

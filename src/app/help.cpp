@@ -60,7 +60,7 @@ void print_help() {
 
 void print_command_help(Command c) {
     const CommandRow& row = kCommands[static_cast<int>(c)];
-    std::string out = std::string("Usage: noneuclid ") + row.name + " [OPTIONS]\n\n" + wrapped(row.summary, 0) + ".\n";
+    std::string out = std::string("Usage: noneuclid ") + row.name + " " + row.usage + "\n\n" + wrapped(row.summary, 0) + ".\n";
     const std::vector<OptionHelp> options = options_help(c);
     out += options.empty() ? "\nIt takes no options.\n" : "\noptions:\n";
     auto column = [](std::string head, std::size_t width) {

@@ -1,6 +1,7 @@
 #include "app/options.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdint>
 #include <iterator>
 #include <vector>
@@ -15,7 +16,7 @@ namespace {
 constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
 constexpr unsigned kRun = bit(Command::run), kRender = bit(Command::render), kDump = bit(Command::dump),
                    kDemo = bit(Command::demo), kAccuracy = bit(Command::accuracy), kButtons = bit(Command::buttons),
-                   kScores = bit(Command::scores);
+                   kScores = bit(Command::scores), kMeasure = bit(Command::measure);
 constexpr unsigned kWorld = kDump | kRender | kRun, kPicture = kRender | kRun;
 
 using Choice = OptionHelp::Choice;
@@ -47,6 +48,33 @@ std::vector<std::string> names_of(const std::vector<Choice>& choices) {
     std::vector<std::string> names;
     for (const Choice& c : choices) names.push_back(c.name);
     return names;
+}
+
+// Points "r,θ r,θ ...": r a distance from O (0 or more), θ an angle in degrees.
+std::vector<geo::Polar<double>> parse_points(const std::string& opt, const std::string& text) {
+    std::vector<geo::Polar<double>> out;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        if (text[at] == ' ') {
+            ++at;
+            continue;
+        }
+        const std::size_t end = std::min(text.find(' ', at), text.size());
+        const std::string word = text.substr(at, end - at);
+        const std::size_t comma = word.find(',');
+        const std::string sentence = opt + " needs points r,deg (a distance from O and an angle in degrees, e.g. 1,90), not '" + word + "'.";
+        if (comma == std::string::npos) usage_error(sentence);
+        char* stop = nullptr;
+        const std::string rs = word.substr(0, comma), ts = word.substr(comma + 1);
+        const double r = std::strtod(rs.c_str(), &stop);
+        if (rs.empty() || *stop != '\0' || !(r >= 0 && r <= 1e4)) usage_error(sentence);
+        const double t = std::strtod(ts.c_str(), &stop);
+        if (ts.empty() || *stop != '\0' || !(t >= -1e6 && t <= 1e6)) usage_error(sentence);
+        out.push_back({r, geo::wrap_pi(t * 3.141592653589793 / 180)});
+        at = end;
+    }
+    if (out.empty()) usage_error(opt + " needs at least one point r,deg (e.g. 1,90).");
+    return out;
 }
 
 std::string one_of(const std::string& opt, const std::string& text, const std::vector<std::string>& allowed) {
@@ -81,7 +109,7 @@ const OptionRow kOptions[] = {
     {"--scene", "NAME|FILE", kWorld,
      "a built-in scene ('noneuclid scenes' lists them) or a TOML scene file (default kiosk; the kiosk: the board's)",
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.scene = a.value(opt); }},
-    {"--curvature", "K", kWorld, "start at this K instead of the scene's, -1 <= K <= 1", nullptr,
+    {"--curvature", "K", kWorld | kMeasure, "the curvature, -1 <= K <= 1: the world starts at it instead of the scene's (measure: measures at it, default 0)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.has_curvature = true, o.curvature = a.number(opt, -1, 1); }},
     {"--engine", "E", kWorld | kDemo, "the engine:", engine_choices,
      [](Args& a, const std::string& opt, Options& o, Command) { o.engine = engine_value(opt, a.value(opt)); }},
@@ -174,6 +202,29 @@ const OptionRow kOptions[] = {
      }},
     {"--events", "N", kButtons, "stop after N presses and releases (default: no limit)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.events = static_cast<long>(a.count(opt, 1, 1000000000)); }},
+    {"--points", "\"r,deg ...\"", kMeasure,
+     "measure triangle: its three marks, each a distance from O and an angle in degrees (default \"1,90 1,210 1,330\")",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.measure.points = parse_points(opt, a.value(opt)); }},
+    {"--centre", "r,deg", kMeasure, "measure circle: its centre (default 0,0, the origin)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         const std::vector<geo::Polar<double>> p = parse_points(opt, a.value(opt));
+         if (p.size() != 1) usage_error(opt + " needs one point r,deg (e.g. 0.5,30).");
+         o.measure.centre = p[0];
+     }},
+    {"--radius", "rho", kMeasure, "measure circle: its radius (default 1)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.radius = a.number(opt, -1e6, 1e6); }},
+    {"--distance", "d", kMeasure, "measure parallels: the common perpendicular's length (default 0.5)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.distance = a.number(opt, -1e6, 1e6); }},
+    {"--length", "s", kMeasure, "measure parallels: the arclength along each (default 1)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.length = a.number(opt, -1e6, 1e6); }},
+    {"--sides", "p", kMeasure, "measure polygon: each polygon's sides, 3 or more (default 3)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.sides = static_cast<int>(a.count(opt, 3, 1000)); }},
+    {"--around", "q", kMeasure, "measure polygon: polygons around the vertex, 3 or more (default 7)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.around = static_cast<int>(a.count(opt, 3, 1000)); }},
+    {"--side", "a", kMeasure, "measure polygon: the side's length (default 1.2)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.side = a.number(opt, -1e6, 1e6); }},
+    {"--limit", "R", kMeasure, "the limit circle's radius: marks must lie within it (default pi)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.measure.limit = a.number(opt, 1e-3, 1e4); }},
     {"--timeout", "SECONDS", kButtons, "stop after this long (default: never)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.timeout = a.number(opt, 0.001, 1e7); }},
 };

@@ -12,14 +12,28 @@
 #include "fixed/accuracy.hpp"
 #include "world/engines.hpp"
 #include "app/script.hpp"
+#include "geometry/measure.hpp"
 #include "files/board.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::app {
 
 // The commands (app/main.cpp's table has what each does).
-enum class Command { run, render, dump, demo, accuracy, buttons, scores, scenes };
-inline constexpr int kCommandCount = 8;
+enum class Command { run, render, dump, demo, accuracy, buttons, scores, scenes, measure };
+inline constexpr int kCommandCount = 9;
+
+// `noneuclid measure`: the instrument and its construction (docs/measure.md). Lengths in world
+// units, angles in radians (degrees on the command line).
+struct MeasureOptions {
+    geo::Instrument instrument = geo::Instrument::triangle;
+    std::vector<geo::Polar<double>> points;   // triangle: its three marks
+    geo::Polar<double> centre{};              // circle
+    double radius = 1;                        // circle
+    double distance = 0.5, length = 1;        // parallels: d and s
+    int sides = 3, around = 7;                // polygon: p and q
+    double side = 1.2;                        // polygon: a
+    double limit = 3.141592653589793;         // the limit circle's radius the marks must lie within
+};
 
 struct Options {
     // The world (dump, render, run)
@@ -64,6 +78,7 @@ struct Options {
     fx::AccuracyOptions accuracy;  // accuracy: --samples, --random, --seed
     long events = 0;               // buttons: stop after this many (0: no limit)
     double timeout = 0;            // buttons: stop after this many seconds (0: none)
+    MeasureOptions measure;        // measure
 };
 
 // The defaults of each command.

@@ -18,7 +18,12 @@ void Recorder::event(double time, ScriptEvent::Kind kind, world::Control control
         case ScriptEvent::press: std::fprintf(f_, "%.9f press %s\n", time, world::control_name(control)); return;
         case ScriptEvent::release: std::fprintf(f_, "%.9f release %s\n", time, world::control_name(control)); return;
         case ScriptEvent::tap: std::fprintf(f_, "%.9f tap %s\n", time, world::control_name(control)); return;
+        case ScriptEvent::mark: return;  // (mark() writes those)
     }
+}
+
+void Recorder::mark(double time, double r, double theta_deg) {
+    if (f_) std::fprintf(f_, "%.9f mark %.17g %.17g\n", time, r, theta_deg);
 }
 
 }  // namespace noneuclid::app

@@ -18,6 +18,7 @@ public:
     void comment(const std::string& text);
     void setting(const char* key, const std::string& value);
     void event(double time, ScriptEvent::Kind kind, world::Control control = world::Control::thrust);
+    void mark(double time, double r, double theta_deg);
 
 private:
     std::FILE* f_;

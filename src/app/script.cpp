@@ -119,7 +119,19 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
         words >> kind >> what;
         ScriptEvent e;
         e.time = time;
-        if (kind == "attract") {
+        if (kind == "mark") {  // "T mark R THETA": a mark of the live instrument at (R, THETA degrees)
+            e.kind = ScriptEvent::mark;
+            std::string theta;
+            words >> theta;
+            char* stop = nullptr;
+            e.r = std::strtod(what.c_str(), &stop);
+            const bool r_ok = !what.empty() && *stop == '\0' && e.r >= 0 && e.r <= 1e4;
+            e.theta_deg = std::strtod(theta.c_str(), &stop);
+            if (!r_ok || theta.empty() || *stop != '\0' || !std::isfinite(e.theta_deg) || std::fabs(e.theta_deg) > 1e6)
+                return fail("expected 'mark R THETA' (a distance from O, 0 to 10000, and an angle in degrees), found " +
+                            quote(content));
+            what = theta;
+        } else if (kind == "attract") {
             if (what == "on") e.kind = ScriptEvent::attract_on;
             else if (what == "off") e.kind = ScriptEvent::attract_off;
             else return fail("expected on or off after 'attract', found " + quote(what));
@@ -127,7 +139,7 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
             if (kind == "press") e.kind = ScriptEvent::press;
             else if (kind == "release") e.kind = ScriptEvent::release;
             else if (kind == "tap") e.kind = ScriptEvent::tap;
-            else return fail("expected press, release, tap or attract after the time, found " + quote(kind));
+            else return fail("expected press, release, tap, mark or attract after the time, found " + quote(kind));
             if (!world::parse_control(what, e.control) || e.control == world::Control::quit)
                 return fail("expected a control (" + control_list() + "), found " + quote(what));
         }

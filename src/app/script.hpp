@@ -29,10 +29,11 @@
 namespace noneuclid::app {
 
 struct ScriptEvent {
-    enum Kind : uint8_t { press, release, tap, attract_on, attract_off };
+    enum Kind : uint8_t { press, release, tap, attract_on, attract_off, mark };
     double time = 0;
     Kind kind = press;
     world::Control control = world::Control::thrust;  // press, release, tap
+    double r = 0, theta_deg = 0;                       // mark: where the live instrument's mark goes
 };
 
 struct Setting {

@@ -4,7 +4,9 @@
 #include <iterator>
 
 #include "app/recorder.hpp"
+#include "geometry/local_frame.hpp"
 #include "render/hud.hpp"
+#include "render/measure_panel.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/worker_pool.hpp"
 
@@ -62,7 +64,25 @@ public:
                 control({e.control, true});
                 control({e.control, false});
                 return;
+            case ScriptEvent::mark:
+                world_.place_mark({T(e.r), geo::wrap_pi(T(e.theta_deg * (3.14159265358979323846 / 180)))});
+                if (recorder_) recorder_->mark(world_.time, e.r, e.theta_deg);
+                return;
         }
+    }
+
+    bool mark_at(double x, double y, int width, int height) override {
+        const double K = static_cast<double>(world_.K), R = static_cast<double>(world_.R);
+        const geo::Projection p = options_.draw.projection;
+        const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p);
+        const geo::Unprojected<double> u = geo::unproject(K, (x - m.cx) / m.scale, (m.cy - y) / m.scale, p);
+        if (!u.valid) return false;
+        const geo::Polar<double> at = geo::to_polar(K, u.p);
+        if (!(at.r <= R) || !std::isfinite(at.theta)) return false;
+        ScriptEvent e;
+        e.time = world_.time, e.kind = ScriptEvent::mark, e.r = at.r, e.theta_deg = at.theta * (180 / 3.14159265358979323846);
+        play(e);
+        return true;
     }
 
     void step() override {
@@ -91,6 +111,10 @@ public:
     }
 
     void draw_hud(const render::Canvas& c) override {
+        // The instruments' readings, with the HUD or without: they are the instruments' faces.
+        int side = 0;
+        for (const auto& g : world_.gauges())
+            if (g.on() && side < 2) render::draw_measure_panel(c, font_, render::measure_panel(g.reading()), side++);
         if (!options_.hud) return;
         render::HudInfo info;
         info.K = static_cast<double>(world_.K);
@@ -180,6 +204,7 @@ private:
                 v.ship_speed = static_cast<double>(b.speed);
                 break;
             }
+        v.measuring = world_.measuring();
         const auto& g = world_.game();
         v.game = g.on();
         if (v.game) {

@@ -59,6 +59,10 @@ public:
     virtual void queue(world::InputEvent e) = 0;
     // Scripted input at its time (an actions file): applied now.
     virtual void play(const ScriptEvent& e) = 0;
+    // A mark of the live instrument where a canvas of width x height shows the pixel (x, y) (a
+    // tap on the web page's canvas), played as a mark event; false where it shows no point of
+    // the world.
+    virtual bool mark_at(double x, double y, int width, int height) = 0;
     // Plays every event of `player` due by the world time now.
     void play_due(ScriptPlayer& player) {
         while (const ScriptEvent* e = player.next_due(time())) play(*e);
@@ -98,7 +102,7 @@ std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Sce
 
 // The HUD legends: the desktop's keys, the kiosk's buttons.
 inline constexpr const char* kKeysLegend =
-    "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  H HUD  R reset  Esc";
+    "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
 inline constexpr const char* kButtonsLegend = "thrust  left/right  fire  curvature +/-  preset  reset";
 inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
 inline constexpr const char* kAttractGameLegend = "attract mode: press fire to play";

@@ -11,6 +11,8 @@
 // "events", what happened in the step that led to this frame:
 //   {"start":true}  {"hit":["bullet 3","asteroid 12"]}  {"crash":"asteroid 7"}  {"level":2}
 //   {"over":1230} (the final score)
+// A world with an instrument on adds after "bodies" "measure": each instrument's readings
+// (files/measure_json.hpp), the scene's first, the live one last.
 // Angles in degrees in (-180, 180]; lengths in world units. Each edge lists its points from one
 // vertex to the next, both ends included (tessellation + 1 points); "screen" holds the same
 // points in pixels with the same nesting, for a canvas of the given size: the disc the
@@ -24,6 +26,7 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
+#include "files/measure_json.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::files {
@@ -185,7 +188,15 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
         }
         out += "]}";
     }
-    out += "]}\n";
+    out += ']';
+    bool listed = false;
+    for (const auto& g : world.gauges()) {
+        if (!g.on()) continue;
+        out += listed ? "," : ",\"measure\":[";
+        listed = true;
+        append_gauge_json(out, g.reading());
+    }
+    out += listed ? "]}\n" : "}\n";
 }
 
 }  // namespace noneuclid::files

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "world/game.hpp"
+#include "world/instruments.hpp"
+#include "world/world.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
 #include "files/text_file.hpp"
@@ -211,10 +213,58 @@ void read_game(const toml::table& t, world::GameSettings& g, Images& images) {
     g.asteroid_texture_scale = s.scale, g.asteroid_texture_bilinear = s.bilinear;
 }
 
+// [[measure]]: an instrument shown from the start (world/instruments.hpp, docs/measure.md),
+// checked at the scene's curvature: a construction it cannot measure is refused here.
+void read_measure(const toml::table& t, int index, world::Scene& scene) {
+    const std::string context = "measure " + std::to_string(index + 1) + ": ";
+    const Reader r(t, context);
+    r.only({"instrument", "points", "radius", "length", "distance", "sides", "around", "side"});
+    world::MeasureDecl d;
+    const std::string kind = r.string("instrument", "");
+    if (!geo::parse_instrument(kind.c_str(), d.kind))
+        throw Bad{t.source(), context + "expected instrument = \"triangle\", \"circle\", \"parallels\" or \"polygon\", found " +
+                                  (kind.empty() ? std::string("none") : "\"" + world::printable(kind) + "\"")};
+    const std::size_t most[] = {3, 2, 2, 1}, least[] = {3, 1, 2, 1};
+    const std::size_t k = static_cast<std::size_t>(d.kind);
+    if (const toml::node* p = t.get("points")) {
+        const toml::array* a = p->as_array();
+        if (!a || a->size() < least[k] || a->size() > most[k])
+            throw Bad{p->source(), context + "expected points = [[r, theta], ...] with " +
+                                       (least[k] == most[k] ? std::to_string(most[k]) : std::to_string(least[k]) + " to " + std::to_string(most[k])) +
+                                       " points for a " + kind};
+        for (const toml::node& e : *a) {
+            const toml::array* q = e.as_array();
+            if (!q || q->size() != 2) throw Bad{e.source(), context + "expected each point as [r, theta in degrees]"};
+            d.marks.push_back({r.as_number(*q->get(0), "points", 0, scene.limit_radius, "r, within the limit radius"),
+                               r.as_number(*q->get(1), "points", -1e6, 1e6, "theta in degrees")});
+        }
+    }
+    d.radius = r.number("radius", d.radius, 1e-6, world::Ranges::kReach, "world units");
+    d.length = r.number("length", d.length, 0, world::Ranges::kReach, "world units along each geodesic");
+    d.distance = r.number("distance", d.distance, 1e-6, world::Ranges::kReach, "world units between the parallels");
+    d.sides = static_cast<int>(r.integer("sides", d.sides, 3, world::kMeasureMaxSides, "sides of each polygon"));
+    d.around = static_cast<int>(r.integer("around", d.around, 3, world::kMeasureMaxAround, "polygons around the vertex"));
+    d.side = r.number("side", d.side, 1e-6, world::Ranges::kReach, "world units");
+    // Measured once at the scene's K, in double, as the world will: its sentence if it cannot be.
+    world::Scene probe;
+    probe.curvature = scene.curvature, probe.limit_radius = scene.limit_radius;
+    probe.measures = {d};
+    const world::World<double> w(probe);
+    const world::GaugeReading& reading = w.gauges().front().reading();
+    geo::MeasureError e = reading.error;
+    if (d.kind == geo::Instrument::polygon) {
+        geo::PolygonReading unused;
+        e = geo::measure_polygon(scene.curvature, d.sides, d.around, d.side, unused);
+    }
+    if (e != geo::MeasureError::none) throw Bad{t.source(), context + kind + ": " + geo::measure_error_sentence(e)};
+    if (scene.measures.size() >= 8) throw Bad{t.source(), context + "a scene may declare at most 8 instruments"};
+    scene.measures.push_back(d);
+}
+
 void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
-            "game"});
+            "game", "measure"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
     s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, world::Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
@@ -232,6 +282,10 @@ void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     if (const toml::array* bodies = tables(root, "body")) {
         int i = 0;
         for (const toml::node& b : *bodies) read_body(*b.as_table(), i++, s, images);
+    }
+    if (const toml::array* measures = tables(root, "measure")) {
+        int i = 0;
+        for (const toml::node& m : *measures) read_measure(*m.as_table(), i++, s);
     }
     if (const toml::node* game = root.get("game")) {
         const toml::table* t = game->as_table();

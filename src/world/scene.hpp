@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "geometry/measure.hpp"
+
 #include "world/image.hpp"
 
 namespace noneuclid::world {
@@ -24,9 +26,9 @@ struct Rgb {
 
 // What a body is, as `dump` names it: the ship (the controlled body), a game's asteroid or
 // bullet, a grid line, or any other body.
-enum class BodyKind : uint8_t { body, ship, asteroid, bullet, grid };
+enum class BodyKind : uint8_t { body, ship, asteroid, bullet, grid, instrument };
 inline const char* kind_name(BodyKind k) {
-    static const char* const names[] = {"body", "ship", "asteroid", "bullet", "grid"};
+    static const char* const names[] = {"body", "ship", "asteroid", "bullet", "grid", "instrument"};
     return names[static_cast<int>(k)];
 }
 
@@ -91,6 +93,22 @@ struct GameSettings {
     bool asteroid_texture_bilinear = false;
 };
 
+// An instrument a scene declares (a scene file's [[measure]]; docs/measure.md): its kind, its
+// marks (r, theta in degrees; none: the defaults below about O) and its construction.
+struct MeasureDecl {
+    geo::Instrument kind = geo::Instrument::triangle;
+    struct Mark {
+        double r = 0, theta_deg = 0;
+    };
+    std::vector<Mark> marks;  // triangle 3; circle its centre (and a point on it); parallels 2; polygon its vertex
+    double radius = 1;        // circle, without a second mark
+    double length = 1.5;      // parallels: the arclength along each
+    double distance = 0.5;    // parallels, without marks: the common perpendicular's length
+    int sides = 3, around = 7;
+    double side = 1.2;        // polygon
+};
+inline constexpr int kMeasureMaxSides = 12, kMeasureMaxAround = 12;
+
 struct Scene {
     std::string name;
     double curvature = 0;
@@ -102,6 +120,7 @@ struct Scene {
     double sweep_rate = 0;          // K changes by this per second on its own (fig17), bouncing at +-1
     std::vector<SceneBody> bodies;
     GameSettings game;             // game.on: the Asteroids game runs in this scene
+    std::vector<MeasureDecl> measures;  // instruments shown from the start (the live one is extra)
 };
 
 // Parameters of the parametric built-in scenes.

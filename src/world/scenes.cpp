@@ -121,6 +121,58 @@ void asteroids(Scene& s) {
     s.game.on = true;
     add_game_slots(s, unused);  // the kiosk's ship and the default settings always fit
 }
+// The instruments (world/instruments.hpp): a triangle about O measured while the ship flies
+// over the axis grid; the instrument button turns on the live one and fire drops its marks.
+void measure(Scene& s) {
+    s.curvature = 0;
+    std::string unused;
+    add_axis_grid(s, 0.5, s.limit_radius, 0.25, {45, 58, 80}, unused);
+    s.bodies.push_back(place(ship(), 1.6, -90, 90, 0, 90, 0));
+    MeasureDecl triangle;
+    triangle.kind = geo::Instrument::triangle;
+    triangle.marks = {{1.2, 90}, {1.2, 210}, {1.2, 330}};
+    s.measures.push_back(triangle);
+}
+// The paper's figure 2: two geodesics leaving a common perpendicular (through O, 1 long) on the
+// same side, 2.4 along each: they meet at K = +1 (at pi / 2), stay 1 apart at K = 0 and fly
+// apart at K = -1; the parallels instrument reads how far apart they end.
+void fig2(Scene& s) {
+    s.curvature = 1;
+    MeasureDecl p;
+    p.kind = geo::Instrument::parallels;
+    p.marks = {{0.5, 180}, {0.5, 0}};
+    p.length = 2.4;
+    s.measures.push_back(p);
+}
+// The paper's figure 4: the {7,3} tiling (regular heptagons, three at each vertex) about O, as
+// bodies, every tile whose centre is within 3 of O; shown in the stereographic view at K = -1
+// (the Poincare disc). Each tile's neighbour across an edge is its reflection there: a centre
+// twice the inradius away toward the edge's midpoint, facing back across that edge.
+void fig4(Scene& s) {
+    s.curvature = -1;
+    const double pi = 3.14159265358979323846, p = 7, q = 3;
+    const double circum = std::acosh(1 / (std::tan(pi / p) * std::tan(pi / q)));
+    const double in = std::acosh(std::cos(pi / q) / std::sin(pi / p));
+    struct Tile {
+        geo::Polar<double> c;
+        double facing;
+    };
+    std::vector<Tile> tiles = {{{0, 0}, 0}};
+    for (std::size_t i = 0; i < tiles.size() && tiles.size() < 400; ++i)
+        for (int k = 0; k < 7; ++k) {
+            const Tile t = tiles[i];
+            const geo::Polar<double> c = geo::walk_end(-1.0, t.c, t.facing + (2 * k + 1) * pi / p, 2 * in);
+            if (c.r > 3) continue;
+            bool seen = false;
+            for (const Tile& o : tiles) seen = seen || geo::distance(-1.0, o.c, c) < 1e-6;
+            if (!seen) tiles.push_back({c, geo::bearing(-1.0, c, t.c) - pi / p});
+        }
+    for (const Tile& t : tiles) {
+        SceneBody b = polygon("heptagon", 7, circum, 0, {120, 200, 255});
+        b.tessellation = 12;
+        s.bodies.push_back(place(b, t.c.r, t.c.theta * 180 / pi, t.facing * 180 / pi, 0, 0, 0));
+    }
+}
 // Five textured bodies about 60 px across on the kiosk's 800x480 screen (0.4 from their
 // centres: 61 px at K = 0), in the built-in images, and one filled: a hexagon, an irregular
 // asteroid, a square, a five-pointed star, a thick "C" that is not star-shaped about its centre
@@ -249,7 +301,13 @@ const SceneRow kScenes[] = {
     {"kiosk", "the kiosk's: a ship, four drifting bodies and the grid", [](Scene& s, const SceneParams&) { kiosk(s); }},
     {"asteroids", "the game: Asteroids in curved space, K turning each level", [](Scene& s, const SceneParams&) { asteroids(s); }},
     {"textured", "textured and filled bodies that bend with K", [](Scene& s, const SceneParams&) { textured(s); }},
+    {"measure", "instruments: a triangle's angles and area while K changes; the instrument button measures more",
+     [](Scene& s, const SceneParams&) { measure(s); }},
     {"fig1", "the paper's figure 1: a body and its geodesic edges", [](Scene& s, const SceneParams&) { fig1(s); }},
+    {"fig2", "the paper's figure 2: lines that start parallel (meet at K > 0, fly apart at K < 0)",
+     [](Scene& s, const SceneParams&) { fig2(s); }},
+    {"fig4", "the paper's figure 4: a {7,3} tiling of heptagons (the Poincare disc: --projection stereographic)",
+     [](Scene& s, const SceneParams&) { fig4(s); }},
     {"fig14", "the paper's figure 14: a body moving along a geodesic at 90 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 90); }},
     {"fig15", "the paper's figure 15: a body moving along a geodesic at 45 degrees", [](Scene& s, const SceneParams&) { geodesic_motion(s, 45); }},
     {"fig16", "the paper's figure 16: the square at ninety pixels", [](Scene& s, const SceneParams&) { fig16(s); }},

@@ -34,6 +34,7 @@
 #include "geometry/geometry.hpp"
 #include "world/body.hpp"
 #include "world/game.hpp"
+#include "world/instruments.hpp"
 #include "world/ranges.hpp"
 #include "world/scene.hpp"
 
@@ -45,19 +46,24 @@ using geo::Pose;
 // What the buttons and keys ask of the world. Held actions (thrust, the turns, curvature up and
 // down, fire) act while held; the others act once, on the press: the next preset, reset, and K
 // set to -1, 0 or +1 (the desktop's keys 1, 2, 3). Fire shoots on its press and again each
-// cooldown while held (world/game.hpp); in a scene without a game it does nothing.
+// cooldown while held (world/game.hpp); in a scene without a game it does nothing. Instrument
+// cycles the live instrument (world/instruments.hpp: triangle, circle, parallels, polygon, off);
+// while one is on, fire drops a mark where the ship is instead of shooting.
 enum class Action : uint8_t {
     thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset, hyperbolic, flat, spherical,
-    fire
+    fire, instrument
 };
-inline constexpr int kActionCount = 11;
+inline constexpr int kActionCount = 12;
 inline const char* action_name(Action a) {
     static const char* const names[] = {"thrust", "left",       "right", "curvature_up", "curvature_down", "preset",
-                                        "reset",  "hyperbolic", "flat",  "spherical",    "fire"};
+                                        "reset",  "hyperbolic", "flat",  "spherical",    "fire",
+                                        "instrument"};
     return names[static_cast<int>(a)];
 }
 // Whether the action acts once on its press (rather than while held).
-inline bool acts_on_press(Action a) { return a >= Action::next_preset && a <= Action::spherical; }
+inline bool acts_on_press(Action a) {
+    return (a >= Action::next_preset && a <= Action::spherical) || a == Action::instrument;
+}
 inline bool parse_action(const std::string& s, Action& out) {
     for (int i = 0; i < kActionCount; ++i)
         if (s == action_name(static_cast<Action>(i))) {
@@ -78,10 +84,12 @@ public:
     explicit World(const Scene& scene) : scene_(scene) {
         K = T(scene_.curvature);
         R = T(scene_.limit_radius);
+        add_gauges();
         for (const SceneBody& sb : scene_.bodies) bodies.push_back(make_body(sb));
         // desc pointers refer to scene_ (a copy we own): fix them up after the copy above.
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
         game_.setup(*this);
+        update_gauges();
         initial_ = bodies;
         initial_K_ = K;
         initial_game_ = game_;
@@ -111,7 +119,11 @@ public:
             case Action::hyperbolic: K = T(-1); break;
             case Action::flat: K = T(0); break;
             case Action::spherical: K = T(1); break;
-            case Action::fire: game_.press_fire(); break;
+            case Action::fire:
+                if (measuring()) gauges_.back().drop(ship_position());
+                else game_.press_fire();
+                break;
+            case Action::instrument: gauges_.back().cycle(); break;
             default: break;
         }
     }
@@ -131,8 +143,21 @@ public:
             if (b.active) step_body(b, dt, steer);
         time += static_cast<double>(dt);
         ++frame;
-        game_.step(*this, dt, held(Action::fire));
+        game_.step(*this, dt, held(Action::fire) && !measuring());
+        update_gauges();
     }
+
+    // A mark of the live instrument at `at` (a tap on the web page), turning it on if it is off.
+    void place_mark(Polar<T> at) {
+        if (!measuring()) gauges_.back().cycle();
+        gauges_.back().drop(at);
+        update_gauges();
+    }
+
+    // The instruments: the scene's, then the live one (last).
+    const std::vector<Gauge<T>>& gauges() const { return gauges_; }
+    // Whether the live instrument is on (fire drops marks).
+    bool measuring() const { return gauges_.back().on(); }
 
     // The game, if the scene has one (world/game.hpp): its phase, score, lives, level, events.
     const Game<T>& game() const { return game_; }
@@ -154,6 +179,8 @@ public:
         K = initial_K_;
         game_ = initial_game_;
         sweep_dir_ = 1;
+        for (Gauge<T>& g : gauges_) g.touch();
+        update_gauges();
     }
 
     // The body's vertices in global polar coordinates.
@@ -188,6 +215,24 @@ private:
         if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
         engine::settle(b, R, walked);  // the limit circle (step 4)
     }
+    // The gauges' bodies appended to the scene (our copy), the live one's last.
+    void add_gauges() {
+        for (const MeasureDecl& d : scene_.measures) {
+            gauges_.emplace_back(d, static_cast<int>(scene_.bodies.size()), false);
+            add_gauge_bodies(scene_, d, false);
+        }
+        gauges_.emplace_back(live_decl_, static_cast<int>(scene_.bodies.size()), true);
+        add_gauge_bodies(scene_, live_decl_, true);
+    }
+    void update_gauges() {
+        for (Gauge<T>& g : gauges_) g.update(K, R, bodies);
+    }
+    // Where the live instrument's next mark goes: the ship's centre (O without a ship).
+    Polar<T> ship_position() const {
+        for (const Body<T>& b : bodies)
+            if (b.active && b.desc->controlled) return b.centre;
+        return {};
+    }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {
         Body<T> b;
@@ -209,11 +254,15 @@ private:
         game_ = o.game_, initial_game_ = o.initial_game_;
         game_.rebind(scene_.game), initial_game_.rebind(scene_.game);
         sweep_dir_ = o.sweep_dir_;
+        gauges_ = o.gauges_;
+        for (std::size_t i = 0; i < gauges_.size(); ++i) gauges_[i].rebind(i < scene_.measures.size() ? scene_.measures[i] : live_decl_);
         for (int i = 0; i < kActionCount; ++i) held_[i] = o.held_[i];
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
     }
 
     Scene scene_;
+    MeasureDecl live_decl_;  // the live instrument's construction (the defaults)
+    std::vector<Gauge<T>> gauges_;
     std::vector<Body<T>> initial_;
     T initial_K_{};
     Game<T> game_, initial_game_;

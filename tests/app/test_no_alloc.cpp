@@ -13,6 +13,7 @@
 #include "render/draw_world.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/hud.hpp"
+#include "render/measure_panel.hpp"
 #include "app/frame_loop.hpp"
 #include "app/memory_display.hpp"
 
@@ -89,6 +90,44 @@ TEST(NoAllocation, ThreadedFramesAllocateNothing) {
             EXPECT_EQ(allocations_per_frames<double>(s, render::PixelFormat::xrgb8888(), true, 60, threads), 0) << s;
             EXPECT_EQ(allocations_per_frames<float>(s, render::PixelFormat::rgb888(), false, 30, threads), 0) << s;
         }
+}
+
+// The instruments while K changes every frame and the live one cycles through every instrument
+// and takes marks (world/instruments.hpp), their panels drawn (render/measure_panel.hpp).
+template <class T>
+long instrument_allocations() {
+    world::Scene scene;
+    EXPECT_TRUE(world::builtin_scene("measure", {}, scene));
+    world::MeasureDecl polygon;
+    polygon.kind = geo::Instrument::polygon;
+    scene.measures.push_back(polygon);
+    world::World<T> w(scene);
+    render::DrawScratch<T> scratch;
+    scratch.prepare(w);
+    std::vector<uint8_t> px(800 * 480 * 4);
+    const render::Canvas c(px.data(), 800, 480, 800 * 4, render::PixelFormat::xrgb8888());
+    w.press(world::Action::thrust);
+    w.press(world::Action::curvature_down);
+    w.step(T(1.0 / 60)), render::draw_world(c, w, {}, scratch);
+    g_allocations = 0;
+    g_counting = true;
+    for (int i = 0; i < 400; ++i) {
+        if (i % 100 == 0) w.press(world::Action::instrument), w.release(world::Action::instrument);
+        if (i % 9 == 0) w.press(world::Action::fire), w.release(world::Action::fire);
+        if (i == 200) w.release(world::Action::curvature_down), w.press(world::Action::curvature_up);
+        w.step(T(1.0 / 60));
+        render::draw_world(c, w, {}, scratch);
+        int side = 0;
+        for (const auto& g : w.gauges())
+            if (g.on()) render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(g.reading()), side++);
+    }
+    g_counting = false;
+    return g_allocations.load();
+}
+
+TEST(NoAllocation, TheInstrumentsAllocateNothingPerFrame) {
+    EXPECT_EQ(instrument_allocations<fx::fixed>(), 0);
+    EXPECT_EQ(instrument_allocations<double>(), 0);
 }
 
 // The counter does count: a frame that builds a vector is seen.

@@ -57,7 +57,11 @@ TEST(Script, ErrorsNameTheLineAndWhatWasExpected) {
     };
     const Case cases[] = {
         {"0 press thrust\nsoon press thrust\n", 2, "expected a time in seconds (a number >= 0) or a setting"},
-        {"1 push thrust\n", 1, "expected press, release, tap or attract after the time, found 'push'"},
+        {"1 push thrust\n", 1, "expected press, release, tap, mark or attract after the time, found 'push'"},
+        {"1 mark 1\n", 1, "expected 'mark R THETA'"},
+        {"1 mark -1 30\n", 1, "expected 'mark R THETA'"},
+        {"1 mark 1 north\n", 1, "expected 'mark R THETA'"},
+        {"1 mark 1 30 40\n", 1, "unexpected '40'"},
         {"1 press warp\n", 1, "found 'warp'"},
         {"1 press quit\n", 1, "found 'quit'"},  // quitting is not replayed
         {"1 press thrust now\n", 1, "unexpected 'now'"},
@@ -106,10 +110,10 @@ TEST(Script, FileContentInMessagesIsQuoted) {
     const std::string mib(1 << 20, 'w');
     const Case cases[] = {
         {"1 press \x1b[2Jwarp\n", "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, fire, projection, hud), found '\\x1b[2Jwarp'"},
+                                  "hyperbolic, flat, spherical, fire, instrument, projection, hud), found '\\x1b[2Jwarp'"},
         {"1 press w\0arp now\n"s, "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, fire, projection, hud), found 'w\\x00arp'"},
-        {"1 \x9b\xff thrust\n", "expected press, release, tap or attract after the time, found '\\x9b\\xff'"},
+                                  "hyperbolic, flat, spherical, fire, instrument, projection, hud), found 'w\\x00arp'"},
+        {"1 \x9b\xff thrust\n", "expected press, release, tap, mark or attract after the time, found '\\x9b\\xff'"},
         {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
         {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},
         {mib + " press thrust\n", "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "

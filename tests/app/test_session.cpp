@@ -4,6 +4,7 @@
 // render). The run here is the real frame loop on a display that delivers scripted keys.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -11,6 +12,8 @@
 
 #include "app/frame_loop.hpp"
 #include "app/picture.hpp"
+#include "app/recorder.hpp"
+#include "test_common.hpp"
 #include "app/setup.hpp"
 
 namespace {
@@ -330,6 +333,55 @@ TEST(Recording, AResizedWindowReplaysAtItsLastSize) {
     EXPECT_EQ(live.last.canvas.width(), 360);
     EXPECT_NE(live.recording.find("\nsize 360x170\n"), std::string::npos) << live.recording;
     EXPECT_EQ(differing_bytes(replay(live.recording), live.last), 0);
+}
+
+// A tap on the canvas (the web page's) marks the live instrument at the world point that pixel
+// shows, in every projection: the dump's triangle has the tapped points as its marks, and the
+// recording's mark lines replay it to the same dump.
+TEST(Session, ATapMarksTheLiveInstrumentWhereThePixelShows) {
+    for (geo::Projection p : geo::kProjections) {
+        app::Options o = app::defaults(app::Command::run);
+        o.scene = "measure", o.has_curvature = true, o.curvature = -0.5, o.projection = p;
+        o.engine = world::engine_named("double");
+        const world::Scene scene = app::load_scene(o);
+        const std::string path = temp_file("marks.txt");
+        std::FILE* file = std::fopen(path.c_str(), "w");
+        ASSERT_NE(file, nullptr);
+        app::Recorder rec(file);
+        const auto s = app::make_session(o.engine, scene, app::session_options(o, scene, "keys"), render::builtin_font(), &rec);
+        // Three points, and the pixels that show them (by the projection's own formula).
+        const geo::Polar<double> want[3] = {{0.8, 0.3}, {1.1, 2.2}, {0.5, -2.0}};
+        for (const geo::Polar<double>& w : want) {
+            const geo::Projected<double> pr = geo::project(-0.5, w.r, p);
+            const auto m = geo::ScreenMap<double>::of(400, 300, -0.5, scene.limit_radius, p);
+            ASSERT_TRUE(s->mark_at(m.cx + m.scale * pr.rho * std::cos(w.theta), m.cy - m.scale * pr.rho * std::sin(w.theta), 400, 300));
+            s->step();
+        }
+        EXPECT_FALSE(s->mark_at(0, 0, 400, 300)) << "a corner shows no point of the world";
+        std::string line;
+        s->dump(400, 300, line);
+        const std::size_t at = line.find("\"measure\":");
+        ASSERT_NE(at, std::string::npos) << line;
+        const std::string live = line.substr(line.rfind("{\"instrument\":\"triangle\""));
+        double got[3][2] = {};
+        ASSERT_EQ(std::sscanf(live.c_str(), "{\"instrument\":\"triangle\",\"K\":%*[^,],\"points\":[[%lf,%lf],[%lf,%lf],[%lf,%lf]]",
+                              &got[0][0], &got[0][1], &got[1][0], &got[1][1], &got[2][0], &got[2][1]), 6) << live;
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(got[k][0], want[k].r, 1e-9) << geo::projection_name(p) << " " << live;
+            EXPECT_NEAR(noneuclid::test::angle_diff(noneuclid::test::deg(got[k][1]), want[k].theta), 0, 1e-9) << geo::projection_name(p) << " " << live;
+        }
+        std::fclose(file);
+        std::string text;
+        {
+            std::FILE* f = std::fopen(path.c_str(), "r");
+            char buf[4096];
+            for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, n);
+            std::fclose(f);
+        }
+        int marks = 0;
+        for (std::size_t at = text.find(" mark "); at != std::string::npos; at = text.find(" mark ", at + 1)) ++marks;
+        EXPECT_EQ(marks, 3) << text;
+    }
 }
 
 // The keys 1, 2, 3 set K, through the session, as actions.

@@ -6,7 +6,7 @@
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes), fill
 // (the filled and textured bodies' fills alone), fillmemset (a memset of as many pixels as the
 // fills cover).
-// ENGINE fixed|double|float, SCENE kiosk|stress|textured|... (filled: textured with colours for
+// ENGINE fixed|double|float, SCENE kiosk|stress|textured|... (NAME+instruments: with four instruments measured in it; filled: textured with colours for
 // textures) or game:A:B (the asteroids scene in play
 // with A asteroids and B bullets in flight; stage collide: the game's collision tests alone,
 // the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
@@ -98,9 +98,23 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     const bool game = std::strncmp(scene_name, "game:", 5) == 0;
     // "filled": the textured scene with each texture replaced by a colour (the fill's spans alone).
     const bool filled = std::strcmp(scene_name, "filled") == 0;
-    if (game ? !game_scene(scene_name, scene, bullets) : !world::builtin_scene(filled ? "textured" : scene_name, params, scene)) {
+    // "NAME+instruments": the scene with a triangle, a circle, the parallels and a ring of seven
+    // triangles measured in it (world/instruments.hpp): the instruments' cost is the difference.
+    std::string name = filled ? "textured" : scene_name;
+    const std::size_t plus = name.find("+instruments");
+    const bool instruments = plus != std::string::npos;
+    if (instruments) name.resize(plus);
+    if (game ? !game_scene(scene_name, scene, bullets) : !world::builtin_scene(name, params, scene)) {
         std::fprintf(stderr, "frame_probe: no built-in scene '%s'.\n", scene_name);
         return 2;
+    }
+    if (instruments) {
+        world::MeasureDecl t, c, p, q;
+        t.kind = geo::Instrument::triangle, t.marks = {{1.2, 90}, {1.2, 210}, {1.2, 330}};
+        c.kind = geo::Instrument::circle, c.marks = {{0.6, 200}}, c.radius = 0.9;
+        p.kind = geo::Instrument::parallels, p.marks = {{1.1, 10}, {1.4, 60}}, p.length = 1.2;
+        q.kind = geo::Instrument::polygon;
+        scene.measures = {t, c, p, q};
     }
     if (K && std::string(K).rfind("sweep", 0) == 0) {  // attract mode's sweep: K changes every frame (-1 to 1 in 40 s)
         scene.curvature = std::string(K).size() > 6 ? std::atof(K + 6) : -0.6;  // sweep@K0 starts at K0

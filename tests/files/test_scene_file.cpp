@@ -120,6 +120,40 @@ TEST(SceneFile, GridsAndExtensions) {
 
 // Only a regular file within its limit is read: a FIFO does not block (it is not opened), a
 // directory or a device is not read as an empty or endless file.
+// [[measure]]: instruments a scene shows from the start, each checked at the scene's K.
+TEST(SceneFile, MeasureTablesDeclareInstrumentsAndRefuseWhatCannotBeMeasured) {
+    Scene s;
+    SceneError err;
+    ASSERT_TRUE(parse_scene("curvature = -1\n[[measure]]\ninstrument = \"polygon\"\nsides = 3\naround = 7\nside = 1.2\n"
+                            "[[measure]]\ninstrument = \"circle\"\npoints = [[1.2, 180]]\nradius = 0.8\n",
+                            "m.toml", s, err))
+        << err.to_string();
+    ASSERT_EQ(s.measures.size(), 2u);
+    EXPECT_EQ(s.measures[0].kind, noneuclid::geo::Instrument::polygon);
+    EXPECT_EQ(s.measures[0].around, 7);
+    EXPECT_EQ(s.measures[1].marks.size(), 1u);
+    EXPECT_EQ(s.measures[1].radius, 0.8);
+    struct Bad {
+        const char* text;
+        const char* message;
+    };
+    const Bad cases[] = {
+        {"[[measure]]\ninstrument = \"hexagon\"\n", "m.toml:1:1: measure 1: expected instrument = \"triangle\", \"circle\", \"parallels\" or \"polygon\", found \"hexagon\""},
+        {"[[measure]]\npoints = [[1, 0], [1, 90], [1, 180]]\n", "measure 1: expected instrument = "},
+        {"[[measure]]\ninstrument = \"triangle\"\npoints = [[0.5, 0], [1, 0], [1.5, 0]]\n", "measure 1: triangle: the three marks lie on one geodesic: move one off it"},
+        {"[[measure]]\ninstrument = \"triangle\"\npoints = [[1, 0], [1, 90]]\n", "measure 1: expected points = [[r, theta], ...] with 3 points for a triangle"},
+        {"[[measure]]\ninstrument = \"triangle\"\npoints = [[1, 0], [9, 90], [1, 180]]\n", "measure 1: 'points' must be from 0 to 3.14159"},
+        {"[[measure]]\ninstrument = \"polygon\"\nside = 0.1\n", "measure 1: polygon: those polygons close at no curvature from -1 to +1: change the side"},
+        {"[[measure]]\ninstrument = \"polygon\"\nsides = 20\n", "measure 1: 'sides' must be from 3 to 12"},
+        {"curvature = 1\n[[measure]]\ninstrument = \"circle\"\nradius = 3.5\n", "measure 1: circle: a length must be positive (and, on the sphere, shorter than halfway round)"},
+        {"[[measure]]\ninstrument = \"circle\"\nwidth = 3\n", "measure 1: unknown key 'width'"},
+    };
+    for (const Bad& c : cases) {
+        EXPECT_FALSE(parse_scene(c.text, "m.toml", s, err)) << c.text;
+        EXPECT_NE(err.to_string().find(c.message), std::string::npos) << err.to_string();
+    }
+}
+
 TEST(InputFiles, OnlyRegularFilesWithinTheLimit) {
     const std::string dir = ::testing::TempDir() + "input_files";
     std::filesystem::remove_all(dir);

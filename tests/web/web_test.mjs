@@ -9,7 +9,9 @@
 //     canvas pixel for pixel, and the same recording without the thrust gives another picture
 //     (the comparison can fail). In the game (the asteroids scene) Space starts it and the
 //     fire button, held, fires: the same holds, and without the button's shots it differs;
-//  3. runs a pasted scene file, whose recording replays on the file, pixel for pixel;
+//  3. runs a pasted scene file, whose recording replays on the file, pixel for pixel; and the
+//     measure scene, where taps on the picture mark the live triangle and the recording of the
+//     marks replays it;
 //  4. says one sentence for a bad option, a scene file it cannot load, a bad pasted one and a
 //     texture file (a page reads none).
 // Every page that should work must also leave its console without an error.
@@ -284,6 +286,41 @@ await check('the textured scene at K = -1: the canvas equals render of its recor
   render(['--actions', recording, '--out', replay]);
   const diff = pngDiff(shot, replay);
   expect(diff.status === 0, `the page differs from render: ${diff.out} (${shot}, ${replay})`);
+  expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+  await page.close();
+});
+
+// ---- 3c. the instruments: taps on the picture mark the live triangle --------------------------------
+await check('the measure scene: three taps on the picture mark a triangle; the recording replays it', async () => {
+  const {page, started} = await openPage('scene=measure&curvature=-0.5&size=560x360&hud=off');
+  expect(started === true, 'the page did not start');
+  await waitFrames(page, 5);
+  const at = (fx, fy) => page.evaluate(`(() => {
+    const r = document.getElementById('screen').getBoundingClientRect();
+    return {x: r.x + ${fx} * r.width, y: r.y + ${fy} * r.height};
+  })()`);
+  for (const [fx, fy] of [[0.4, 0.3], [0.62, 0.45], [0.45, 0.7]]) {
+    const p = await at(fx, fy);
+    await page.touch('touchStart', p.x, p.y);
+    await page.touch('touchEnd', p.x, p.y);
+    await waitFrames(page, 3);
+  }
+  await waitFrames(page, 5);
+  await page.evaluate('window.noneuclid.stop()');
+  const shot = path.join(work, 'measure-page.png'), recording = path.join(work, 'measure.rec');
+  await canvasPng(page, shot);
+  const text = await page.evaluate('window.noneuclid.recording()');
+  fs.writeFileSync(recording, text);
+  expect((text.match(/ mark /g) || []).length === 3, `the recording has not three marks:\n${text}`);
+  const replay = path.join(work, 'measure-render.png');
+  render(['--actions', recording, '--out', replay]);
+  const diff = pngDiff(shot, replay);
+  expect(diff.status === 0, `the page differs from the replay of its recording: ${diff.out}`);
+  const without = path.join(work, 'measure-without.rec');
+  fs.writeFileSync(without, text.replace(/^\S+ mark .*\n/gm, ''));
+  render(['--actions', without, '--out', path.join(work, 'measure-without.png')]);
+  expect(pngDiff(shot, path.join(work, 'measure-without.png')).status === 1,
+         'the replay without the marks should differ from the page, and does not');
   expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
   await page.close();
 });

@@ -259,6 +259,12 @@
     });
     $('stop').addEventListener('click', () => mod._nw_stop());
     $('restart').addEventListener('click', () => start(lastWords) && canvas.focus());
+    // A tap on the picture drops a mark of the live instrument there (M cycles the instrument).
+    canvas.addEventListener('pointerdown', (e) => {
+      const box = canvas.getBoundingClientRect();
+      mod._nw_mark((e.clientX - box.left) * canvas.width / box.width, (e.clientY - box.top) * canvas.height / box.height);
+      canvas.focus();
+    });
     $('run-text').addEventListener('click', () => runText('pasted.toml', $('scene-text').value));
     $('scene-file').addEventListener('change', async (e) => {
       const file = e.target.files[0];

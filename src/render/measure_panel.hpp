@@ -1,0 +1,27 @@
+// The instruments' readings on the screen (docs/measure.md): one panel of short lines per
+// instrument that is on, beside the disc (the first on the right, the next on the left), in the
+// HUD's font at twice its size where the side has room (on the kiosk's 800x480, characters 32
+// pixels tall: legible from two metres). A construction the instrument cannot measure shows its
+// sentence, never a NaN. Nothing where the sides have no room for it (a square picture).
+// Allocates nothing.
+#pragma once
+
+#include "render/canvas.hpp"
+#include "render/font.hpp"
+#include "world/instruments.hpp"
+
+namespace noneuclid::render {
+
+struct MeasurePanel {
+    static constexpr int kLines = 10, kWidth = 48;
+    int lines = 0;
+    char text[kLines][kWidth] = {};
+};
+
+// The panel's lines for a reading.
+MeasurePanel measure_panel(const world::GaugeReading& r);
+// Draws it on `side` 0 (right of the disc) or 1 (left).
+void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color = {255, 225, 140},
+                        Rgb dim = {170, 175, 190});
+
+}  // namespace noneuclid::render
