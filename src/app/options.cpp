@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/displays.hpp"
+#include "world/earth.hpp"
 #include "world/quote.hpp"
 
 namespace noneuclid::app {
@@ -104,6 +105,12 @@ const OptionRow kOptions[] = {
      [](Args& a, const std::string& opt, Options& o, Command) { o.params.vertices = static_cast<int>(a.count(opt, 1, 10000)); }},
     {"--tessellation", "N", kWorld, "the stress scene's points an edge (8)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.params.tessellation = static_cast<int>(a.count(opt, 1, 256)); }},
+    {"--centre", "LAT,LON", kWorld, "the earth scene's centre, the place at O, in degrees (default 51.5,0: Greenwich)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
+         const std::string v = a.value(opt);
+         if (!world::parse_centre(v, o.params.centre_lat, o.params.centre_lon))
+             usage_error(opt + " must be a latitude and a longitude in degrees, LAT,LON with -90 <= LAT <= 90 and -180 <= LON <= 180 (e.g. 51.5,0), not '" + v + "'.");
+     }},
     {"--aa", "", kPicture, "anti-aliased lines (default off; the kiosk: the board's)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.aa = true; }},
     {"--no-aa", "", kPicture, "aliased lines", nullptr, [](Args&, const std::string&, Options& o, Command) { o.aa = false; }},

@@ -109,6 +109,7 @@ struct SceneParams {
     int bodies = 200;       // stress
     int vertices = 8;       // stress
     int tessellation = 8;   // stress
+    double centre_lat = 51.5, centre_lon = 0;  // earth: the place at O, degrees (default Greenwich; world/earth.hpp)
 };
 
 // The built-in scenes (world/scenes.cpp's table): each one's name and what it shows, in one
