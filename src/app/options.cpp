@@ -111,6 +111,12 @@ const OptionRow kOptions[] = {
          if (!world::parse_centre(v, o.params.centre_lat, o.params.centre_lon))
              usage_error(opt + " must be a latitude and a longitude in degrees, LAT,LON with -90 <= LAT <= 90 and -180 <= LON <= 180 (e.g. 51.5,0), not '" + v + "'.");
      }},
+    {"--view", "KM", kWorld,
+     "the earth scene zoomed by curvature: KM km from the centre to the screen's edge, at K = (KM / (pi 6371))^2 "
+     "(default: the whole globe at K = 1)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
+         o.params.view_km = a.number(opt, world::kEarthViewMinKm, world::kEarthViewMaxKm);
+     }},
     {"--aa", "", kPicture, "anti-aliased lines (default off; the kiosk: the board's)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.aa = true; }},
     {"--no-aa", "", kPicture, "aliased lines", nullptr, [](Args&, const std::string&, Options& o, Command) { o.aa = false; }},

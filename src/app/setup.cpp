@@ -56,6 +56,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
         char centre[64];
         std::snprintf(centre, sizeof centre, "%.17g,%.17g", o.params.centre_lat, o.params.centre_lon);
         rec.setting("centre", centre);
+        if (o.params.view_km > 0) rec.setting("view", std::to_string(o.params.view_km));
     }
     if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
     rec.setting("engine", world::engine_name(o.engine));

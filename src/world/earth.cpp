@@ -67,19 +67,42 @@ constexpr int kMaxDepth = 8;
 // A body's vertices at most (Budget::kVerticesPerBody is far above it): a longer line goes on
 // in a new body from the same point.
 constexpr std::size_t kPieceVertices = 4000;
+// Zoomed in (--view), the lines are kept to the view: a line ends at its first vertex past
+// kCullMargin outside the limit circle, and an edge whose every point lies farther (both ends
+// farther than half its length) is not halved at all.
+constexpr double kCullMargin = 0.25;
 
 double hyperbolic_length(SceneBody::Vertex a, SceneBody::Vertex b) {
     const double dr = std::sinh((a.rho - b.rho) / 2), s = std::sin((a.phi_deg - b.phi_deg) * kDeg / 2);
     return 2 * std::asinh(std::sqrt(dr * dr + std::sinh(a.rho) * std::sinh(b.rho) * s * s));
 }
 
+// The places' polar coordinates in the world: the centre's frame, and the world units a radian
+// of the Earth is (1 / sqrt K when zoomed, earth_view_curvature; else 1).
+struct Placing {
+    Frame frame;
+    double scale = 1, cull = 1e300;
+    int depth = kMaxDepth;
+    SceneBody::Vertex polar(V3 v) const {
+        SceneBody::Vertex p = frame.polar(v);
+        p.rho *= scale;
+        return p;
+    }
+};
+
+double arc(V3 a, V3 b) {
+    const V3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    return std::atan2(std::sqrt(dot(c, c)), dot(a, b));
+}
+
 class Lines {
 public:
-    Lines(Scene& s, const Frame& f, const char* name, Rgb color) : scene_(s), frame_(f), name_(name), color_(color) {}
+    Lines(Scene& s, const Placing& f, const char* name, Rgb color) : scene_(s), frame_(f), name_(name), color_(color) {}
     void start(V3 p) {
         flush();
         last_ = p;
-        piece_.push_back(frame_.polar(p));
+        outside_ = false;
+        add(frame_.polar(p));
     }
     // The line on to p along the great circle.
     void to(V3 p) {
@@ -98,12 +121,18 @@ public:
 
 private:
     void edge(V3 a, V3 b, int depth) {
-        const SceneBody::Vertex pb = frame_.polar(b);
-        if (hyperbolic_length(frame_.polar(a), pb) <= kStep) return add(pb);
-        if (depth == kMaxDepth) {
+        const SceneBody::Vertex pa = frame_.polar(a), pb = frame_.polar(b);
+        if (std::fmin(pa.rho, pb.rho) - arc(a, b) * frame_.scale / 2 > frame_.cull) {
             flush();
             broken_ = true;
-            return piece_.push_back(pb);
+            outside_ = true, outside_at_ = pb;
+            return;
+        }
+        if (hyperbolic_length(pa, pb) <= kStep) return add(pb);
+        if (depth >= frame_.depth) {
+            flush();
+            broken_ = true;
+            return add(pb);
         }
         V3 m{a.x + b.x, a.y + b.y, a.z + b.z};
         const double n = std::sqrt(dot(m, m));
@@ -113,6 +142,17 @@ private:
         edge(m, b, depth + 1);
     }
     void add(SceneBody::Vertex v) {
+        if (v.rho > frame_.cull) {  // outside the view: the line ends here, or waits here
+            if (!piece_.empty()) {
+                piece_.push_back(v);
+                flush();
+                broken_ = true;
+            }
+            outside_ = true, outside_at_ = v;
+            return;
+        }
+        if (piece_.empty() && outside_) piece_.push_back(outside_at_);  // (from just outside)
+        outside_ = false;
         piece_.push_back(v);
         if (piece_.size() >= kPieceVertices) {
             flush();
@@ -136,20 +176,21 @@ private:
         piece_.clear();
     }
     Scene& scene_;
-    const Frame& frame_;
+    const Placing& frame_;
     const char* name_;
     Rgb color_;
     std::vector<SceneBody::Vertex> piece_;
     V3 last_{};
+    SceneBody::Vertex outside_at_{};
     int count_ = 0;
-    bool broken_ = false;
+    bool broken_ = false, outside_ = false;
 };
 
 const Rgb kGraticule{55, 70, 95}, kCoast{130, 215, 150};
 
 // Meridians every 15 degrees from pole to pole, parallels every 15 degrees from 75 S to 75 N,
 // a point every 3 degrees (the halving above adds more where K = -1 needs them).
-void graticule(Scene& s, const Frame& f) {
+void graticule(Scene& s, const Placing& f) {
     Lines meridians(s, f, "meridian", kGraticule);
     for (int lon = -180; lon < 180; lon += 15) {
         meridians.start(unit(-90, lon));
@@ -164,7 +205,7 @@ void graticule(Scene& s, const Frame& f) {
     }
 }
 
-void coastlines(Scene& s, const Frame& f) {
+void coastlines(Scene& s, const Placing& f) {
     Lines coast(s, f, "coast", kCoast);
     for (const earth_data::Line& l : earth_data::kLines) {
         auto at = [](int32_t i) { return unit(earth_data::kPoints[i][0] * 1e-4, earth_data::kPoints[i][1] * 1e-4); };
@@ -195,10 +236,20 @@ bool parse_centre(const std::string& text, double& lat, double& lon) {
     return true;
 }
 
-void earth_scene(Scene& s, double lat0, double lon0) {
-    s.curvature = 1;
+double earth_view_curvature(double view_km) {
+    const double q = view_km / (kPi * kEarthRadiusKm);
+    return q * q;
+}
+
+void earth_scene(Scene& s, double lat0, double lon0, double view_km) {
+    s.curvature = view_km > 0 ? earth_view_curvature(view_km) : 1;
     s.limit_radius = kPi;
-    const Frame f(lat0, lon0);
+    Placing f{Frame(lat0, lon0)};
+    if (view_km > 0) {
+        f.scale = 1 / std::sqrt(s.curvature);
+        f.cull = s.limit_radius + kCullMargin;
+        f.depth = kMaxDepth + static_cast<int>(std::ceil(std::log2(f.scale)));
+    }
     graticule(s, f);
     coastlines(s, f);
 }

@@ -24,8 +24,22 @@ EarthPolar earth_polar(double lat0, double lon0, double lat, double lon);
 // such numbers.
 bool parse_centre(const std::string& text, double& lat, double& lon);
 
-// The earth scene about the centre (lat0, lon0): K = +1, limit radius pi, the graticule and
-// the coastlines as grid bodies (a backdrop: their edges are short, docs/earth.md).
-void earth_scene(Scene& s, double lat0, double lon0);
+// The Earth's mean radius, km, and the views --view takes: from a city to the antipode (half
+// the circumference, pi times the radius, where K = 1).
+inline constexpr double kEarthRadiusKm = 6371;
+inline constexpr double kEarthViewMinKm = 10, kEarthViewMaxKm = 3.14159265358979323846 * kEarthRadiusKm;
+
+// The curvature at which the screen's radius (the limit radius pi) shows view_km of an Earth of
+// kEarthRadiusKm: the Earth is then the sphere of that curvature, of radius 1 / sqrt K world
+// units, so a world unit is kEarthRadiusKm sqrt K km and pi of them are view_km:
+// K = (view_km / (pi kEarthRadiusKm))^2 (docs/earth.md).
+double earth_view_curvature(double view_km);
+
+// The earth scene about the centre (lat0, lon0), limit radius pi, the graticule and the
+// coastlines as grid bodies (a backdrop: their edges are short, docs/earth.md). view_km 0: the
+// whole globe at K = +1, a place at its angle from the centre. Else zoomed: K from
+// earth_view_curvature, a place at its distance on that sphere (its angle / sqrt K), and only
+// the lines within the view (and just past its edge) kept.
+void earth_scene(Scene& s, double lat0, double lon0, double view_km = 0);
 
 }  // namespace noneuclid::world

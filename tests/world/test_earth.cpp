@@ -113,4 +113,52 @@ TEST(Earth, TheSceneHoldsEveryCoastPointWithinTheBudgetAndRanges) {
     }
 }
 
+// Zoomed (--view KM): K = (KM / (pi 6371))^2, so that the limit radius pi is KM on the sphere of
+// that curvature; every data point within the view is there at its angle / sqrt K, and only the
+// lines in view (and just past it) are kept.
+TEST(Earth, ZoomedTheViewIsKmOnTheSphereOfThatCurvature) {
+    for (double view : {5000.0, 1000.0, 50.0}) {
+        world::SceneParams p;
+        p.view_km = view;
+        world::Scene s;
+        ASSERT_TRUE(world::builtin_scene("earth", p, s));
+        const double K = std::pow(view / (kPi * 6371), 2);
+        EXPECT_NEAR(s.curvature, K, 1e-15 * K);
+        // The limit radius pi, on the sphere of radius 1 / sqrt K = 6371 km: view km.
+        EXPECT_NEAR(s.limit_radius * 6371 * std::sqrt(s.curvature), view, 1e-9 * view);
+        std::string why;
+        EXPECT_TRUE(world::within_budget(s, why)) << why;
+        EXPECT_TRUE(world::within_ranges(s, why)) << why;
+        for (const world::SceneBody& b : s.bodies)
+            for (const auto& v : b.vertices) EXPECT_LE(v.rho, kPi + 0.25 + 0.1 + 1e-9) << b.name;
+        long in_view = 0;
+        for (std::size_t i = 0; i < std::size(world::earth_data::kPoints); ++i) {
+            const auto& pt = world::earth_data::kPoints[i];
+            const world::EarthPolar q = world::earth_polar(51.5, 0, pt[0] * 1e-4, pt[1] * 1e-4);
+            const double r = q.r / std::sqrt(K);
+            if (r > kPi) continue;
+            ++in_view;
+            bool found = false;
+            for (const world::SceneBody& b : s.bodies)
+                for (const auto& v : b.vertices)
+                    found = found || (std::fabs(v.rho - r) <= 1e-12 * r && v.phi_deg == q.theta_deg);
+            EXPECT_TRUE(found) << "point " << i << " in the " << view << " km view";
+        }
+        if (view >= 1000) {
+            EXPECT_GT(in_view, 10) << view;  // (not vacuous: Britain's coast is within 1000 km)
+        }
+    }
+    world::Scene s;
+    world::SceneParams p;
+    p.view_km = 1000;
+    world::builtin_scene("earth", p, s);
+    long n = 0;
+    for (const world::SceneBody& b : s.bodies) n += static_cast<long>(b.vertices.size());
+    world::Scene globe;
+    world::builtin_scene("earth", {}, globe);
+    long m = 0;
+    for (const world::SceneBody& b : globe.bodies) m += static_cast<long>(b.vertices.size());
+    EXPECT_LT(n, m) << "the view keeps only what it shows";
+}
+
 }  // namespace
