@@ -92,7 +92,7 @@ Diff compare(const std::string& got, const std::string& want, int width, int tol
 }
 
 TEST(Golden, TheDoubleEngineRedrawsItsGoldens) {
-    ASSERT_EQ(app::kFigureCount, 6);
+    ASSERT_EQ(app::kFigureCount, 7);
     for (const Figure& g : std::span(app::kFigures, app::kFigureCount)) {
         int width = 0;
         const std::string got = render_rgb(g, world::engine_named("double"), width);
