@@ -16,6 +16,10 @@
 # fig2.png, fig4.png  the demo's figures 2 (lines that start parallel) and 4 (a {7,3} tiling)
 # projections-k1.png, projections-k-1.png  the kiosk scene in the five projections at K = +1
 #                and -1 (equidistant, stereographic, gnomonic, orthographic, Lambert), 320x320 each
+# earth.png      the earth scene about Greenwich at K = +1, with the HUD, 800x480 (docs/earth.md)
+# earth-curvature.png  the same, stereographic, at K = +1, 0 and -1 (400x400 each)
+# earth-zoom.png  zoom by curvature: the whole globe, 5000 km and 1500 km from Greenwich
+# earth-projections.png  the earth scene at K = +1 in the five projections, 320x320 each
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -100,3 +104,20 @@ for k in -1 0 1; do
     "$nc" render --scene measure --frames 0 --aa --font builtin --size 560x360 --curvature "$k" --out "$tmp/m$k.png"
 done
 python3 "$tmp/join.py" "$tmp/m-1.png" "$tmp/m0.png" "$tmp/m1.png" docs/images/measure-triangle.png
+# The Earth (docs/earth.md): about Greenwich, at K = +1; K = +1, 0, -1 (stereographic); zoomed by
+# curvature; the five projections.
+"$nc" render --scene earth --centre 51.5,0 --curvature 1 --frames 0 --aa --hud --size 800x480 --out docs/images/earth.png
+for k in 1 0 -1; do
+    "$nc" render --scene earth --frames 0 --aa --size 400x400 --curvature "$k" --projection stereographic --out "$tmp/e$k.png"
+done
+python3 "$tmp/join.py" "$tmp/e1.png" "$tmp/e0.png" "$tmp/e-1.png" docs/images/earth-curvature.png
+for v in 20015 5000 1500; do
+    "$nc" render --scene earth --view "$v" --frames 0 --aa --size 400x400 --out "$tmp/v$v.png"
+done
+python3 "$tmp/join.py" "$tmp/v20015.png" "$tmp/v5000.png" "$tmp/v1500.png" docs/images/earth-zoom.png
+panels=()
+for p in equidistant stereographic gnomonic orthographic lambert; do
+    "$nc" render --scene earth --frames 0 --aa --size 320x320 --projection "$p" --out "$tmp/ep$p.png"
+    panels+=("$tmp/ep$p.png")
+done
+python3 "$tmp/join.py" "${panels[@]}" docs/images/earth-projections.png

@@ -2,8 +2,10 @@
 // golden-image tests (tests/render/test_golden.cpp), the within-one-pixel check of the figures
 // (tests/render/test_curves.cpp) and tests/golden/regenerate.sh (which runs the demo with the
 // reference engine at the goldens' size). A figure is one picture of one to three panels side
-// by side, each its scene run at its own K and labelled with it.
+// by side, each its scene run at its own K and labelled with it, in its projection.
 #pragma once
+
+#include "geometry/projection.hpp"
 
 namespace noneuclid::app {
 
@@ -21,7 +23,8 @@ struct Figure {
     bool own_K = false;       // one panel at the scene's own K (and no label of it)
     long grid_trail = 0;      // and every this-many-th frame's grid over the earlier ones (0: none)
     const char* label = nullptr;  // the panel's label instead of "K = ..."
-    const char* projection = "equidistant";  // the view (geo::ProjectionTable's name)
+    geo::Projection projection = geo::Projection::azimuthal_equidistant;
+    double centre_lat = 51.5, centre_lon = 0;  // the earth scene's centre (world/earth.hpp)
 };
 
 extern const Figure kFigures[];

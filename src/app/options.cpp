@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/displays.hpp"
+#include "world/earth.hpp"
 #include "world/quote.hpp"
 
 namespace noneuclid::app {
@@ -132,6 +133,28 @@ const OptionRow kOptions[] = {
      [](Args& a, const std::string& opt, Options& o, Command) { o.params.vertices = static_cast<int>(a.count(opt, 1, 10000)); }},
     {"--tessellation", "N", kWorld, "the stress scene's points an edge (8)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.params.tessellation = static_cast<int>(a.count(opt, 1, 256)); }},
+    // (One option, two meanings: a place on the Earth for the earth scene, a point of the world
+    // for measure's circle.)
+    {"--centre", "LAT,LON|r,deg", kWorld | kMeasure,
+     "the earth scene's centre, the place at O: LAT,LON in degrees (default 51.5,0: Greenwich); measure circle: "
+     "its centre r,deg (default 0,0, the origin)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command c) {
+         const std::string v = a.value(opt);
+         if (c == Command::measure) {
+             const std::vector<geo::Polar<double>> p = parse_points(opt, v);
+             if (p.size() != 1) usage_error(opt + " needs one point r,deg (e.g. 0.5,30).");
+             o.measure.centre = p[0];
+             return;
+         }
+         if (!world::parse_centre(v, o.params.centre_lat, o.params.centre_lon))
+             usage_error(opt + " must be a latitude and a longitude in degrees, LAT,LON with -90 <= LAT <= 90 and -180 <= LON <= 180 (e.g. 51.5,0), not '" + v + "'.");
+     }},
+    {"--view", "KM", kWorld,
+     "the earth scene zoomed by curvature: KM km from the centre to the screen's edge, at K = (KM / (pi 6371))^2 "
+     "(default: the whole globe at K = 1)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
+         o.params.view_km = a.number(opt, world::kEarthViewMinKm, world::kEarthViewMaxKm);
+     }},
     {"--aa", "", kPicture, "anti-aliased lines (default off; the kiosk: the board's)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.aa = true; }},
     {"--no-aa", "", kPicture, "aliased lines", nullptr, [](Args&, const std::string&, Options& o, Command) { o.aa = false; }},
@@ -205,12 +228,6 @@ const OptionRow kOptions[] = {
     {"--points", "\"r,deg ...\"", kMeasure,
      "measure triangle: its three marks, each a distance from O and an angle in degrees (default \"1,90 1,210 1,330\")",
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.measure.points = parse_points(opt, a.value(opt)); }},
-    {"--centre", "r,deg", kMeasure, "measure circle: its centre (default 0,0, the origin)", nullptr,
-     [](Args& a, const std::string& opt, Options& o, Command) {
-         const std::vector<geo::Polar<double>> p = parse_points(opt, a.value(opt));
-         if (p.size() != 1) usage_error(opt + " needs one point r,deg (e.g. 0.5,30).");
-         o.measure.centre = p[0];
-     }},
     {"--radius", "rho", kMeasure, "measure circle: its radius (default 1)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.radius = a.number(opt, -1e6, 1e6); }},
     {"--distance", "d", kMeasure, "measure parallels: the common perpendicular's length (default 0.5)", nullptr,

@@ -78,8 +78,8 @@ PictureResult render_figure(const Figure& f, const Options& base, const render::
         Options o = base;
         o.scene = f.scene, o.frames = f.frames, o.timelapse = f.timelapse, o.timelapse_grids = f.grid_trail, o.aa = f.aa;
         o.hud = base.hud && f.hud;
+        o.projection = f.projection, o.params.centre_lat = f.centre_lat, o.params.centre_lon = f.centre_lon;
         if (!f.own_K) o.has_curvature = true, o.curvature = f.K[i];
-        o.projection = parse_projection("the figure's projection", f.projection);
         Picture panel;
         last = render_picture(o, load_scene(o), nullptr, font, panel);
         if (last.stopped) return last;

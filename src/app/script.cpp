@@ -14,8 +14,9 @@ namespace {
 // The longest setting value: a path's (PATH_MAX).
 constexpr std::size_t kSettingLimit = 4096;
 
-const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size", "format", "aa",
-                                    "hud",   "font",      "legend", "frames",     "best",   nullptr};
+const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size",   "format", "aa",
+                                    "hud",   "font",      "legend", "frames",     "best",   "centre", "view",
+                                    nullptr};
 
 bool is_setting(const std::string& word) {
     for (const char* const* k = kSettingKeys; *k; ++k)

@@ -53,6 +53,12 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     std::error_code ec;
     const bool file = o.scene.find('/') != std::string::npos || o.scene.ends_with(".toml");
     rec.setting("scene", file ? std::filesystem::absolute(o.scene, ec).string() : o.scene);
+    if (o.scene == "earth") {
+        char centre[64];
+        std::snprintf(centre, sizeof centre, "%.17g,%.17g", o.params.centre_lat, o.params.centre_lon);
+        rec.setting("centre", centre);
+        if (o.params.view_km > 0) rec.setting("view", std::to_string(o.params.view_km));
+    }
     if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
     rec.setting("engine", world::engine_name(o.engine));
     rec.setting("projection", geo::projection_name(o.projection));

@@ -128,6 +128,8 @@ struct SceneParams {
     int bodies = 200;       // stress
     int vertices = 8;       // stress
     int tessellation = 8;   // stress
+    double centre_lat = 51.5, centre_lon = 0;  // earth: the place at O, degrees (default Greenwich; world/earth.hpp)
+    double view_km = 0;  // earth: the view's radius, km (0: the whole globe at K = 1)
 };
 
 // The built-in scenes (world/scenes.cpp's table): each one's name and what it shows, in one

@@ -83,6 +83,15 @@ TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
         }
 }
 
+// The Earth: thousands of vertices, K turning every frame (every shape cache rebuilt), in both
+// projections' paths. (Fewer frames than above: each draws them all.)
+TEST(NoAllocation, TheEarthAllocatesNothingPerFrame) {
+    for (bool aa : {false, true}) {
+        EXPECT_EQ(allocations_per_frames<fx::fixed>("earth", render::PixelFormat::rgb565(), aa, 20), 0);
+        EXPECT_EQ(allocations_per_frames<double>("earth", render::PixelFormat::xrgb8888(), aa, 20), 0);
+    }
+}
+
 TEST(NoAllocation, ThreadedFramesAllocateNothing) {
     for (const char* s : {"kiosk", "stress", "textured"})
         for (int threads : {2, 3}) {

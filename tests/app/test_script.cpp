@@ -98,7 +98,7 @@ TEST(Script, AByteOrderMarkBeforeTheFirstLineIsAccepted) {
     // Only at the start: elsewhere it is a bad token like any other, and shown escaped.
     ASSERT_FALSE(app::parse_script("0 press thrust\n\xEF\xBB\xBF" "1 tap preset\n", "bom.txt", s, err));
     EXPECT_EQ(err.to_string(), "bom.txt:2: expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                               "projection, size, format, aa, hud, font, legend, frames, best) first, found '\\ufeff1'");
+                               "projection, size, format, aa, hud, font, legend, frames, best, centre, view) first, found '\\ufeff1'");
 }
 
 // What the file holds reaches the message escaped (world/quote.hpp) and cut to 60 characters.
@@ -117,7 +117,7 @@ TEST(Script, FileContentInMessagesIsQuoted) {
         {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
         {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},
         {mib + " press thrust\n", "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                                  "projection, size, format, aa, hud, font, legend, frames, best) first, found '" +
+                                  "projection, size, format, aa, hud, font, legend, frames, best, centre, view) first, found '" +
                                       std::string(59, 'w') + "…'"},
         {"scene a\x1b]0;x\x07" "b\n", "the setting 'scene' has a control character or a byte that is not UTF-8: "
                                   "'a\\x1b]0;x\\x07b'"},
@@ -244,6 +244,38 @@ TEST(Options, ABadSettingNamesTheFileAndLine) {
         ADD_FAILURE() << "no error";
     } catch (const app::UsageError& e) {
         EXPECT_EQ(e.message, path + ":3: --engine must be fixed, double, float or paper, not 'quantum'.");
+    }
+}
+
+// The earth scene's centre and view are settings too: a recording of it replays the same place
+// and zoom (app/setup.cpp writes them), and a bad one names the file and line.
+TEST(Options, TheEarthsCentreAndViewAreSettings) {
+    const std::string path = ::testing::TempDir() + "Options.TheEarthsCentreAndViewAreSettings.txt";
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("scene earth\ncentre -33.9,151.2\nview 1500\n", f);
+        std::fclose(f);
+    }
+    std::string a0 = "noneuclid", a1 = "--actions", a2 = path;
+    char* argv[] = {a0.data(), a1.data(), a2.data()};
+    Script script;
+    const app::Options o = app::layered_options(3, argv, 1, app::Command::render, script);
+    EXPECT_EQ(o.params.centre_lat, -33.9);
+    EXPECT_EQ(o.params.centre_lon, 151.2);
+    EXPECT_EQ(o.params.view_km, 1500);
+    {
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        ASSERT_NE(f, nullptr);
+        std::fputs("scene earth\ncentre 100,0\n", f);
+        std::fclose(f);
+    }
+    Script s2;
+    try {
+        app::layered_options(3, argv, 1, app::Command::render, s2);
+        ADD_FAILURE() << "no error";
+    } catch (const app::UsageError& e) {
+        EXPECT_NE(e.message.find(path + ":2: --centre must be a latitude and a longitude"), std::string::npos) << e.message;
     }
 }
 

@@ -81,15 +81,17 @@ TEST(Curves, TheDemosFiguresAreWithinOnePixel) {
         const app::Figure& f = app::kFigures[i];
         for (int panel = 0; panel < f.panels; ++panel) {
             world::Scene s;
-            ASSERT_TRUE(world::builtin_scene(f.scene, {}, s)) << f.scene;
+            world::SceneParams params;
+            params.centre_lat = f.centre_lat, params.centre_lon = f.centre_lon;
+            ASSERT_TRUE(world::builtin_scene(f.scene, params, s)) << f.scene;
             const double K = f.own_K ? s.curvature : f.K[panel];
             const long every = f.timelapse > 0 ? 4 * f.timelapse : f.frames;
             const std::string what = std::string(f.name) + " panel " + std::to_string(panel) + " K=" + std::to_string(K);
             expect(run_and_check<world::World<fx::fixed>>(s, K, static_cast<int>(f.frames), static_cast<int>(every),
-                                                           geo::Projection::azimuthal_equidistant, 480, 480),
+                                                           f.projection, 480, 480),
                    what + " fixed");
             expect(run_and_check<world::World<double>>(s, K, static_cast<int>(f.frames), static_cast<int>(every),
-                                                        geo::Projection::azimuthal_equidistant, 480, 480),
+                                                        f.projection, 480, 480),
                    what + " double");
         }
     }
