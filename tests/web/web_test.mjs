@@ -249,7 +249,7 @@ await check('the game: Space starts it, the fire button fires; the replay of the
 });
 
 // ---- 3. a pasted scene file ----------------------------------------------------------------------
-const lesson = path.join(here, '..', 'world', 'data', 'lesson.toml');
+const lesson = path.join(here, '..', 'files', 'data', 'lesson.toml');
 await check('a pasted scene file runs, and its recording replays on the file', async () => {
   // Without the HUD, which names the scene by its path (/pasted.toml in the page).
   const {page, started} = await openPage('scene=kiosk&size=320x240&hud=off');
