@@ -60,11 +60,11 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
     render::HudInfo hud;
     w.press(world::Action::thrust);  // the ship accelerates: the velocity path runs too
     w.press(world::Action::curvature_down);
-    for (int i = 0; i < 3; ++i) w.step(T(1.0 / 60)), draw(c, o);  // warm up
+    for (int i = 0; i < 3; ++i) w.step(1.0 / 60), draw(c, o);  // warm up
     g_allocations = 0;
     g_counting = true;
     for (int i = 0; i < frames; ++i) {
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         draw(c, o);
         hud.K = static_cast<double>(w.K);
         render::draw_hud(c, render::builtin_font(), hud);
