@@ -32,9 +32,11 @@ refused() {
         fail "$name: not the one sentence: $(head -c 400 err.txt)"
         return
     fi
-    local left
-    left=$(ls -A | grep -v -x -e out.txt -e err.txt -e keep.png -e keep.png.good)
-    if [ -n "$left" ]; then fail "$name: left behind: $left"; return; fi
+    local f left=""
+    for f in * .[!.]*; do
+        case $f in out.txt | err.txt | keep.png | keep.png.good | '*' | '.[!.]*') ;; *) left="$left $f" ;; esac
+    done
+    if [ -n "$left" ]; then fail "$name: left behind:$left"; return; fi
     if ! cmp -s keep.png keep.png.good; then fail "$name: keep.png was changed"; return; fi
     pass "$name"
 }
