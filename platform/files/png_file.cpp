@@ -2,6 +2,8 @@
 #include "app/platform.hpp"
 
 #include <png.h>
+#include <sys/stat.h>
+#include <zlib.h>
 
 #include <cerrno>
 #include <csetjmp>
@@ -146,7 +148,64 @@ bool png_header(const std::string& d, uint32_t& width, uint32_t& height, std::st
     width = big_endian(d, 16), height = big_endian(d, 20);
     return true;
 }
+// The most a chunk before the image (a text, a colour profile) may take inflated.
+constexpr png_alloc_size_t kChunkMax = 64 << 10;
+
+// The bytes the image's rows take inflated, from its header (each row a filter byte and its
+// pixels; an interlaced image's seven passes each so); 0 if the header is not one PNG allows.
+uint64_t inflated_size(const std::string& d) {
+    const uint64_t w = big_endian(d, 16), h = big_endian(d, 20);
+    const unsigned depth = static_cast<uint8_t>(d[24]), type = static_cast<uint8_t>(d[25]);
+    const unsigned interlace = static_cast<uint8_t>(d[28]);
+    static const unsigned kChannels[7] = {1, 0, 3, 1, 2, 0, 4};  // by colour type
+    if (type > 6 || kChannels[type] == 0 || depth == 0 || depth > 16 || interlace > 1) return 0;
+    const uint64_t bits = uint64_t{kChannels[type]} * depth;
+    auto rows = [&](uint64_t pw, uint64_t ph) { return pw == 0 || ph == 0 ? 0 : ph * (1 + (pw * bits + 7) / 8); };
+    if (interlace == 0) return rows(w, h);
+    static const unsigned kPass[7][4] = {{0, 0, 8, 8}, {4, 0, 8, 8}, {0, 4, 4, 8}, {2, 0, 4, 4}, {0, 2, 2, 4}, {1, 0, 2, 2}, {0, 1, 1, 2}};
+    uint64_t total = 0;
+    for (const auto& p : kPass)
+        total += rows(w > p[0] ? (w - p[0] + p[2] - 1) / p[2] : 0, h > p[1] ? (h - p[1] + p[3] - 1) / p[3] : 0);
+    return total;
+}
+
+// Whether the image data (the IDAT chunks' zlib stream) inflates past what the header says
+// its rows take: inflated here, before libpng, and never further than that, so that a few MiB
+// of file cannot hold gigabytes to inflate (libpng, once the rows are read, inflates what
+// follows them to its end). A damaged or short stream is left to libpng to report.
+bool inflates_past_its_rows(const std::string& d) {
+    const uint64_t most = inflated_size(d);
+    if (most == 0) return false;
+    z_stream z{};
+    if (inflateInit(&z) != Z_OK) return false;
+    Bytef out[64 << 10];
+    uint64_t total = 0;
+    int ret = Z_OK;
+    for (std::size_t at = 8; ret == Z_OK && total <= most && at + 12 <= d.size();) {
+        const std::size_t length = big_endian(d, at);
+        if (length > d.size() - at - 12) break;
+        if (d.compare(at + 4, 4, "IDAT") == 0) {
+            z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(d.data() + at + 8));
+            z.avail_in = static_cast<uInt>(length);
+            while (ret == Z_OK && z.avail_in > 0 && total <= most) {
+                z.next_out = out, z.avail_out = sizeof out;
+                ret = inflate(&z, Z_NO_FLUSH);
+                total += sizeof out - z.avail_out;
+            }
+        }
+        at += length + 12;
+    }
+    inflateEnd(&z);
+    return total > most;
+}
 }  // namespace
+
+std::string file_identity(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return "";
+    return std::to_string(static_cast<unsigned long long>(st.st_dev)) + ":" +
+           std::to_string(static_cast<unsigned long long>(st.st_ino));
+}
 
 bool read_texture(const std::string& path, world::Image& out, std::string& why) {
     std::string bytes;
@@ -165,6 +224,11 @@ bool read_texture(const std::string& path, world::Image& out, std::string& why) 
               (w == 0 || h == 0 ? std::string("which no image is: save it again")
                                 : "over the " + std::to_string(most) + " x " + std::to_string(most) +
                                       " a texture may be: scale it down");
+        return false;
+    }
+    if (inflates_past_its_rows(bytes)) {
+        why = path + ": its compressed image data inflates to more than the " + std::to_string(w) + " x " +
+              std::to_string(h) + " texels its header gives (damaged, or made to exhaust memory): save the image again";
         return false;
     }
     PngMessages messages;
@@ -186,6 +250,9 @@ bool read_texture(const std::string& path, world::Image& out, std::string& why) 
     }
     png_set_read_fn(png, &in, read_bytes);
     png_set_user_limits(png, most, most);
+    // Compressed ancillary chunks (text, colour profiles) are inflated no further than this:
+    // none is used, and each could otherwise inflate to libpng's default of 8 MB.
+    png_set_chunk_malloc_max(png, kChunkMax);
     png_read_info(png, info);
     png_set_expand(png);  // palette and grey below 8 bits to 8-bit RGB or grey
     png_set_strip_16(png);

@@ -24,6 +24,10 @@ bool read_png(const std::string& path, int&, int&, std::string&, std::string& er
     return false;
 }
 
+std::string file_identity(const std::string&) {
+    return "";  // no image file is read, so none is shared
+}
+
 bool read_texture(const std::string& path, world::Image&, std::string& why) {
     why = path + ": " + kNoPng + ", or name a built-in image (builtin:checker, builtin:rock)";
     return false;

@@ -4,6 +4,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <new>
+#include <system_error>
 
 #include "app/args.hpp"
 #include "app/commands.hpp"
@@ -43,6 +45,24 @@ int main(int argc, char** argv) {
         status = dispatch(argc, argv);
     } catch (const noneuclid::app::UsageError& e) {
         std::fprintf(stderr, "noneuclid: %s\n", e.message.c_str());
+        return 2;
+    } catch (const std::bad_alloc&) {
+        // Everything is sized before the run starts (the canvas, the GIF's buffers, the frame's
+        // scratch, the scene and its images), so this is a request too large for the memory the
+        // process may have. The unwinding has removed any temporary file; what was there is
+        // left as it was.
+        std::fprintf(stderr,
+                     "noneuclid: out of memory: %s needs more memory than this process may have (the canvas "
+                     "takes 4 bytes a pixel, a GIF 4 more): use a smaller --size or a smaller scene; no file was "
+                     "written or changed.\n",
+                     argc > 1 && argv[1][0] != '-' ? argv[1] : "the run");
+        return 2;
+    } catch (const std::system_error& e) {
+        // A worker thread that cannot start (its stack is memory too); the same unwinding.
+        std::fprintf(stderr,
+                     "noneuclid: cannot start a thread (%s): use fewer --threads, or give the process more memory; no "
+                     "file was written or changed.\n",
+                     e.code().message().c_str());
         return 2;
     }
     // What went to standard output (a report, help, a dump) must have arrived: a full disk or a

@@ -158,6 +158,10 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
 // with one sentence (no full stop, the path in it) in `why`: missing, not a PNG file,
 // truncated or damaged, too large.
 bool read_texture(const std::string& path, world::Image& out, std::string& why);
+// The identity of the file at `path` (its device and inode, the link followed), "" if it cannot
+// be found: a texture named by two spellings of one file's path ("a.png", "./a.png", a link) is
+// decoded once (files::FileIdentity).
+std::string file_identity(const std::string& path);
 
 // An animated GIF written frame by frame (platform/files/gif_file.cpp, giflib), whole or not
 // at all as write_png writes (AtomicFile): `path` is untouched until finish() succeeds, and a

@@ -253,7 +253,7 @@ private:
     bool new_best_ = false;
     render::WorkerPool pool_;
     Autopilot autopilot_;
-    T dt_;
+    double dt_;  // world seconds a step: the clock (World::step)
     render::DrawScratch<T, typename W::engine> scratch_;
     render::ParallelScratch<T, typename W::engine> parallel_;
     world::InputEvent queue_[kQueue];

@@ -19,7 +19,7 @@ world::Scene load_scene(const Options& o) {
     if (!world::builtin_scene(o.scene, o.params, scene, &over)) {
         if (!over.empty()) usage_error(over + " (--bodies, --vertices, --tessellation).");
         files::SceneError err;
-        if (!files::load_scene_file(o.scene, scene, err, platform::read_texture)) {
+        if (!files::load_scene_file(o.scene, scene, err, platform::read_texture, platform::file_identity)) {
             std::error_code ec;
             if (err.line == 0 && o.scene.find('/') == std::string::npos && o.scene.find(".toml") == std::string::npos &&
                 !std::filesystem::exists(std::filesystem::symlink_status(o.scene, ec))) {

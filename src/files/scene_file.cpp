@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "world/budget.hpp"
 #include "world/game.hpp"
 #include "world/instruments.hpp"
 #include "world/world.hpp"
@@ -16,12 +17,23 @@ namespace {
 
 using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 
-// Where a scene's textures come from: the built-in images by name, files through the reader
-// (each file read once however many bodies name it), relative to the scene file's directory.
+// Where a scene's textures come from: the built-in images by name, files through the reader,
+// relative to the scene file's directory. A file is decoded once however many bodies name it
+// and however its path is spelt (`identify` gives the file's identity), and the images decoded
+// are counted against the world's budget, so that no scene can ask for more than it.
 struct Images {
     const ImageReader& reader;
+    const FileIdentity& identify;
     std::string dir;  // the scene file's directory, with its '/', or ""
-    std::vector<std::pair<std::string, std::shared_ptr<const world::Image>>> read;
+    // Each image read, under its path as resolved and under its file's identity ("" if none).
+    std::vector<std::pair<std::string, std::shared_ptr<const world::Image>>> by_path, by_file;
+    long long bytes = 0;  // of the images read
+
+    static std::shared_ptr<const world::Image> find(const auto& list, const std::string& key) {
+        for (const auto& [k, image] : list)
+            if (k == key) return image;
+        return nullptr;
+    }
 
     // The image `key` names in the table read by r (its value as written), or a Bad at its place.
     std::shared_ptr<const world::Image> get(const Reader& r, const char* key, const std::string& context) {
@@ -31,8 +43,12 @@ struct Images {
         if (name.empty()) throw Bad{node->source(), shown + "expected a PNG file's name or a built-in image"};
         const bool builtin = name.rfind(world::kBuiltinImagePrefix, 0) == 0;
         const std::string path = builtin || name[0] == '/' ? name : dir + name;
-        for (const auto& [p, image] : read)
-            if (p == path) return image;
+        if (auto image = find(by_path, path)) return image;
+        const std::string file = builtin || !identify ? std::string() : identify(path);
+        if (auto image = file.empty() ? nullptr : find(by_file, file)) {
+            by_path.emplace_back(path, image);
+            return image;
+        }
         auto image = std::make_shared<world::Image>();
         std::string why;
         if (builtin) {
@@ -46,7 +62,11 @@ struct Images {
         } else if (!reader(path, *image, why)) {
             throw Bad{node->source(), shown + why};
         }
-        read.emplace_back(path, image);
+        const long long more = world::image_bytes(*image);
+        if (!world::images_allow(bytes, more, why)) throw Bad{node->source(), shown + why};
+        bytes += more;
+        by_path.emplace_back(path, image);
+        if (!file.empty()) by_file.emplace_back(file, image);
         return image;
     }
 };
@@ -307,20 +327,21 @@ std::string SceneError::to_string() const {
 }
 
 bool parse_scene(const std::string& text, const std::string& name, world::Scene& out, SceneError& error,
-                 const ImageReader& reader) {
+                 const ImageReader& reader, const FileIdentity& identify) {
     out = world::Scene{};
     out.name = name;
-    Images images{reader, name.substr(0, name.rfind('/') + 1), {}};
+    Images images{reader, identify, name.substr(0, name.rfind('/') + 1), {}, {}, 0};
     return tomlr::parse_toml(text, name, error, [&](const toml::table& root) { read_scene(root, out, images); });
 }
 
-bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images) {
+bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images,
+                     const FileIdentity& identify) {
     std::string text, why;
     if (!read_text_file(path, kSceneFileLimit, "a scene file", text, why)) {
         error = {path, 0, 0, "the scene file: " + why + ": check the path, or name a built-in scene (see --help)"};
         return false;
     }
-    return parse_scene(text, path, out, error, images);
+    return parse_scene(text, path, out, error, images, identify);
 }
 
 }  // namespace noneuclid::files

@@ -40,13 +40,19 @@ struct SceneError {
 // the image and how to fix it. Built-in images ("builtin:...") never reach it.
 using ImageReader = std::function<bool(const std::string& path, world::Image& out, std::string& why)>;
 
+// The identity of the file at `path` (app/setup.cpp: its device and inode, from the platform),
+// "" if there is none: two paths with one identity name one file, decoded once.
+using FileIdentity = std::function<std::string(const std::string& path)>;
+
 // Reads a scene file. On failure returns false and fills `error`. A texture's file is read with
-// `images`, its path taken relative to the scene file's directory; without a reader only the
-// built-in images can be named.
-bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images = {});
+// `images`, its path taken relative to the scene file's directory, once per path and, with
+// `identify`, once per file; without a reader only the built-in images can be named. The
+// images decoded are held to the world's budget (world/budget.hpp) as they are read.
+bool load_scene_file(const std::string& path, world::Scene& out, SceneError& error, const ImageReader& images = {},
+                     const FileIdentity& identify = {});
 // The same from a string (`name` is used in messages in place of a path, and as the path that
 // textures are relative to).
 bool parse_scene(const std::string& text, const std::string& name, world::Scene& out, SceneError& error,
-                 const ImageReader& images = {});
+                 const ImageReader& images = {}, const FileIdentity& identify = {});
 
 }  // namespace noneuclid::files

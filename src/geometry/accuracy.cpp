@@ -41,11 +41,12 @@ struct Rng {
 };
 
 // Bodies with every number on the Q16.16 grid, so that all engines solve the same problem.
-std::vector<Body> make_scene(uint64_t seed, int count, double rho_lo, double rho_hi) {
+// Centres at r_lo to r_hi (of the limit radius: up to 0.95, inside the limit circle).
+std::vector<Body> make_scene(uint64_t seed, int count, double rho_lo, double rho_hi, double r_lo = 0, double r_hi = 0.95) {
     Rng rng{seed};
     std::vector<Body> bodies(static_cast<std::size_t>(count));
     for (Body& b : bodies) {
-        b.centre = {q(rng.uniform(0, 0.95 * kLimit)), q(rng.uniform(-kPi, kPi))};
+        b.centre = {q(rng.uniform(r_lo * kLimit, r_hi * kLimit)), q(rng.uniform(-kPi, kPi))};
         b.facing = q(rng.uniform(-kPi, kPi));
         b.n = 3 + static_cast<int>(rng.uniform(0, 3.999));
         double phi = rng.uniform(-kPi, kPi);
@@ -144,10 +145,25 @@ struct Comparison {
     double bound_vertices, bound_edges;
     bool near_zero_only;  // |K| <= 0.02
     bool short_edges;     // a scene of tiny bodies (rho 1e-3 .. 2e-3): edges of ~1e-3
+    bool antipode = false;  // the same population near the sphere's antipode, sampled densely
 };
 
-std::vector<double> k_sweep(const GeometryReportOptions& o, bool near_zero_only) {
+// Near the antipode: K in [0.9, 1] and centres at 0.75 to 0.95 of R (r = 2.36 to 2.98 at
+// K = 1), where the equidistant view magnifies the fixed engine's error most; the scene of the
+// rows over K in [-1, 1] holds such bodies too, but few of them at such K.
+constexpr double kAntipodeFrom = 0.75;
+constexpr int kAntipodeKSteps = 50, kAntipodeBodies = 4;  // K steps; bodies per K, times o.bodies
+// The fixed engine's bounds (px) over the whole population of bodies, which its points near the
+// antipode decide: vertices (a walk of the coasts' kernel, walk.hpp), edge points (the Q16.16
+// slerp and its polar reading, whose small components near the antipode the view magnifies).
+constexpr double kAntipodeVertices = 0.05, kAntipodeEdges = 0.14;
+
+std::vector<double> k_sweep(const GeometryReportOptions& o, bool near_zero_only, bool antipode) {
     std::vector<double> ks;
+    if (antipode) {
+        for (int i = 0; i <= kAntipodeKSteps; ++i) ks.push_back(q(0.9 + 0.1 * i / kAntipodeKSteps));
+        return ks;
+    }
     if (near_zero_only) {
         for (double k : {-0.02, -0.0101, -0.01, -0.005, -1e-3, -1e-4, -2 / 65536.0, -1 / 65536.0, 0.0,
                          1 / 65536.0, 2 / 65536.0, 1e-4, 1e-3, 0.005, 0.01, 0.0101, 0.02})
@@ -160,12 +176,15 @@ std::vector<double> k_sweep(const GeometryReportOptions& o, bool near_zero_only)
 
 const Comparison& comparison(int i) {
     static const Comparison kComparisons[] = {
-        {"fixed", "double", "K in [-1, 1]", solve<fixed>, solve<double>, 0.05, 0.08, false, false},
+        {"fixed", "double", "K in [-1, 1]", solve<fixed>, solve<double>, kAntipodeVertices, kAntipodeEdges, false, false},
         {"float", "double", "K in [-1, 1]", solve<float>, solve<double>, 0.01, 0.01, false, false},
         {"double", "reference", "K in [-1, 1]", solve<double>, solve_reference, 1e-7, 1e-7, false, false},
-        {"fixed", "reference", "K in [-1, 1]", solve<fixed>, solve_reference, 0.05, 0.08, false, false},
+        {"fixed", "reference", "K in [-1, 1]", solve<fixed>, solve_reference, kAntipodeVertices, kAntipodeEdges, false, false},
         {"double", "reference", "short edges (~1e-3)", solve<double>, solve_reference, 1e-7, 1e-7, false, true},
         {"fixed", "reference", "short edges (~1e-3)", solve<fixed>, solve_reference, 0.05, 0.08, false, true},
+        {"fixed", "double", "near the antipode", solve<fixed>, solve<double>, kAntipodeVertices, kAntipodeEdges, false, false, true},
+        {"fixed", "reference", "near the antipode", solve<fixed>, solve_reference, kAntipodeVertices, kAntipodeEdges, false, false, true},
+        {"fixed", "reference", "short edges, antipode", solve<fixed>, solve_reference, 0.05, 0.08, false, true, true},
         {"paper", "reference", "K in [-1, 1]",
          [](double K, const Body& b, auto& v, auto& e) { solve_paper(K, b, v, e); }, solve_reference, 0, 0, false, false},
         {"paper", "reference", "|K| <= 0.02",
@@ -175,7 +194,7 @@ const Comparison& comparison(int i) {
     };
     return kComparisons[i];
 }
-constexpr int kComparisonCount = 9;
+constexpr int kComparisonCount = 12;
 
 }  // namespace
 
@@ -185,11 +204,13 @@ int measure_screen_error(const GeometryReportOptions& o, ScreenErrorRow* rows, i
     int n = 0;
     for (int c = 0; c < kComparisonCount && n + 2 <= capacity; ++c) {
         const Comparison& cmp = comparison(c);
-        const std::vector<Body> scene = cmp.short_edges ? make_scene(o.seed + 7, o.bodies, 1e-3, 2e-3)
-                                                        : make_scene(o.seed, o.bodies, 0.02, 0.6);
+        const int bodies = cmp.antipode ? o.bodies * kAntipodeBodies : o.bodies;
+        const double from = cmp.antipode ? kAntipodeFrom : 0;
+        const std::vector<Body> scene = cmp.short_edges ? make_scene(o.seed + 7, bodies, 1e-3, 2e-3, from, 0.95)
+                                                        : make_scene(o.seed + (cmp.antipode ? 11 : 0), bodies, 0.02, 0.6, from, 0.95);
         Collector verts, edges;
         std::vector<Polar<double>> gv, ge, wv, we;
-        for (double K : k_sweep(o, cmp.near_zero_only)) {
+        for (double K : k_sweep(o, cmp.near_zero_only, cmp.antipode)) {
             for (const Body& b : scene) {
                 gv.clear(), ge.clear(), wv.clear(), we.clear();
                 cmp.got(K, b, gv, ge);

@@ -8,6 +8,8 @@
 // model; the distance in px between an engine's point and the reference's (or the double
 // engine's) is the error. Points within 2% of the rim are left out where K > 0: there the
 // rim is the antipode, where two points a hair apart land on opposite sides of the screen.
+// Rows "near the antipode" sample the same population densely where K is near 1 and the
+// centres far out, where the view magnifies the fixed engine's error most.
 #pragma once
 
 #include <cstdint>

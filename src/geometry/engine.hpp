@@ -2,7 +2,7 @@
 // bodies through E, and render draws a body through E alone, so that a new engine (or a world
 // whose curvature varies) is a new policy here and a row in the engine table (world/engines.hpp),
 // and nothing in render. An engine E provides, for its scalar T = E::scalar:
-//   move(K, b, dt)          body b one step of dt along its geodesic (speed, direction of travel,
+//   move(K, b, dt)          body b one step of dt (a Tick) along its geodesic (speed, direction of travel,
 //                           facing and acceleration's direction carried); true if it walked b's
 //                           coast (geometry/coast.hpp)
 //   settle(b, R, walked)    after the step: the limit circle's wrap of a centre past R, and what
@@ -47,7 +47,7 @@ struct Exact {
     using Cache = ShapeCache<T>;
 
     template <class B>
-    static bool move(T K, B& b, T dt) {
+    static bool move(T K, B& b, const Tick<T>& dt) {
         coast_step(K, b, dt);
         return true;
     }
@@ -89,8 +89,8 @@ struct Paper {
     };
 
     template <class B>
-    static bool move(double K, B& b, double dt) {
-        const Pose<double> p = paper::move(K, Pose<double>{b.centre, b.travel, b.facing}, b.speed * dt);
+    static bool move(double K, B& b, const Tick<double>& dt) {
+        const Pose<double> p = paper::move(K, Pose<double>{b.centre, b.travel, b.facing}, b.speed * dt.dt);
         b.accel_dir = wrap_pi(b.accel_dir + (p.facing - b.facing));
         b.centre = p.centre, b.travel = p.travel, b.facing = p.facing;
         return false;

@@ -5,7 +5,10 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <type_traits>
 
+#include "geometry/fx/coast.hpp"
 #include "geometry/model.hpp"
 
 namespace noneuclid::geo {
@@ -118,8 +121,19 @@ T bearing(T K, Polar<T> p, Polar<T> q) {
 
 // (a) A vertex's global position from the body centre, the body's facing (carried frame) and
 //     the local polar vertex (rho, phi from the facing).
+//     In fixed point the walk is the coasts' kernel (fx::coast_walk: 64-bit integers, S_K and
+//     C_K in Q26, the end's bearing as a binary angle), within its domain: near the sphere's
+//     antipode the end's Q16.16 components are small, and their rounding, magnified by the
+//     equidistant view there, would show (docs/accuracy.md).
 template <class T>
 Polar<T> vertex_position(T K, Polar<T> centre, T facing, Polar<T> local) {
+    if constexpr (std::is_same_v<T, fx::fixed>) {
+        const fx::angle theta = fx::angle::from_radians(centre.theta);
+        fx::CoastEnd e;
+        if (fx::coast_walk(K, int64_t{centre.r.raw()} << 8, fx::angle::from_radians(facing + local.theta) - theta,
+                           int64_t{local.r.raw()} << 8, e))
+            return {fx::fixed::from_raw(fx::detail::saturate32((e.r24 + 128) >> 8)), (theta + e.bearing).to_radians()};
+    }
     return walk_end(K, centre, facing + local.theta, local.r);
 }
 

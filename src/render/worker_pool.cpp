@@ -61,10 +61,17 @@ struct WorkerPool::Workers {
 WorkerPool::WorkerPool(int threads, std::chrono::microseconds spin)
     : size_(threads < 1 ? 1 : threads), workers_(std::make_unique<Workers>(spin)) {
     workers_->threads.reserve(static_cast<std::size_t>(size_ - 1));
-    for (int i = 1; i < size_; ++i) workers_->threads.emplace_back([this, i] { workers_->loop(i); });
+    try {
+        for (int i = 1; i < size_; ++i) workers_->threads.emplace_back([this, i] { workers_->loop(i); });
+    } catch (...) {  // a thread that cannot start (std::system_error): those started end first
+        stop();
+        throw;
+    }
 }
 
-WorkerPool::~WorkerPool() {
+WorkerPool::~WorkerPool() { stop(); }
+
+void WorkerPool::stop() {
     Workers& w = *workers_;
     {
         const std::lock_guard<std::mutex> lock(w.mutex);

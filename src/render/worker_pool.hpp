@@ -39,6 +39,8 @@ public:
     static void pause();
 
 private:
+    // Ends the workers and joins them (the destructor; a constructor that could not start them all).
+    void stop();
     // Calls call(context, i) on every worker i and call(context, 0) here, then waits for them.
     void run_on_all(void (*call)(void*, int), void* context);
 

@@ -23,6 +23,7 @@ struct alignas(64) Body {
     bool active = true;    // in the world: moved, drawn, dumped, hit (a game's spare slots are not)
     bool hidden = false;   // in the world but not drawn this frame (the respawned ship blinking)
     bool wrapped = false;  // the last step took it across the limit circle
+    int64_t spin_rest = 0; // spin * dt's remainder below the facing's step, carried (geo::turn_by)
 
     // What the engines (geometry/engine.hpp) read of its description.
     bool closed() const { return desc->closed; }

@@ -1,6 +1,7 @@
 #include "world/budget.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace noneuclid::world {
 
@@ -34,7 +35,36 @@ bool over(const char* what, long want, long limit, const char* fix, std::string&
           " a world may have: " + fix;
     return true;
 }
+// "64 MiB", or the bytes grouped below a MiB.
+std::string grouped_bytes(long long v) {
+    return v >= (1LL << 20) && v % (1LL << 20) == 0 ? grouped(static_cast<long>(v >> 20)) + " MiB"
+                                                   : grouped(static_cast<long>(v)) + " bytes";
+}
+// The bytes of the scene's images, each counted once however many bodies share it.
+long long scene_image_bytes(const Scene& scene) {
+    std::vector<const Image*> seen;
+    long long bytes = 0;
+    auto count = [&](const std::shared_ptr<const Image>& im) {
+        if (!im || std::find(seen.begin(), seen.end(), im.get()) != seen.end()) return;
+        seen.push_back(im.get());
+        bytes += image_bytes(*im);
+    };
+    for (const SceneBody& b : scene.bodies) count(b.texture);
+    count(scene.game.asteroid_texture);
+    return bytes;
+}
 }  // namespace
+
+long long image_bytes(const Image& image) {
+    return static_cast<long long>(image.texels.size()) * static_cast<long long>(sizeof(uint32_t));
+}
+
+bool images_allow(long long held, long long more, std::string& why) {
+    if (held + more <= Budget::kImageBytes) return true;
+    why = "the scene's texture images would take " + grouped_bytes(held + more) + " decoded, over the " +
+          grouped_bytes(Budget::kImageBytes) + " a world may have: use fewer or smaller images";
+    return false;
+}
 
 long drawn_points(long vertices, long tessellation) {
     return vertices * (tessellation > 0 ? tessellation : 1) + 1;
@@ -60,7 +90,8 @@ bool within_budget(const Scene& scene, std::string& why) {
            !over("bodies", t.bodies, Budget::kBodies, "use fewer bodies", why) &&
            !over("vertices", t.vertices, Budget::kVertices, "use fewer bodies or vertices", why) &&
            !over("points to draw a frame", t.points, Budget::kPoints,
-                 "use fewer bodies or vertices, or a lower tessellation", why);
+                 "use fewer bodies or vertices, or a lower tessellation", why) &&
+           images_allow(0, scene_image_bytes(scene), why);
 }
 
 }  // namespace noneuclid::world

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "world/image.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::world {
@@ -16,7 +17,17 @@ struct Budget {
     static constexpr long kVerticesPerBody = 10000;   // vertices of one body
     static constexpr long kVertices = 1L << 19;       // vertices of all bodies: 524,288
     static constexpr long kPoints = 1L << 20;         // points drawn a frame: 1,048,576
+    // Decoded texture images, counted once per image however many bodies share it: sixteen
+    // images of the largest size (world/image.hpp), 64 MiB.
+    static constexpr long long kImageBytes = 64LL << 20;
 };
+
+// The bytes `image` takes decoded (its texels).
+long long image_bytes(const Image& image);
+
+// Whether images already taking `held` bytes can take one more of `more` bytes; false with a
+// sentence in `why` (without a full stop), whose end says what to lower.
+bool images_allow(long long held, long long more, std::string& why);
 
 // The points a body of `vertices` vertices puts on screen a frame, its edges tessellated at
 // `tessellation` (an upper bound: a closed body's edges).
@@ -26,7 +37,8 @@ long drawn_points(long vertices, long tessellation);
 // false with a sentence in `why` (without a full stop), whose end says what to lower.
 bool budget_allows(const Scene& scene, long bodies, long vertices, long tessellation, std::string& why);
 
-// Whether the scene as built is within the budget; false with a sentence in `why`.
+// Whether the scene as built is within the budget (its distinct images included); false with a
+// sentence in `why`.
 bool within_budget(const Scene& scene, std::string& why);
 
 }  // namespace noneuclid::world

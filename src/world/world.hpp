@@ -13,6 +13,10 @@
 //     move: geo::Exact walks the body's coast from where it began, geometry/coast.hpp, so the
 //     steps' roundings do not add up; geo::Paper walks each step from the last).
 //  3. spin (plus the ship's turn while left/right is held) turns the facing.
+// Time: `time` is the world's clock, the sum of the steps' dt exactly as given (1/60 s), in
+// every engine. Each step hands the engine a geo::Tick: in fixed point dt rounds to Q16.16
+// (1/60 is 0.015% short there), so what moves at a rate (speed * dt, spin * dt) is taken from
+// the step's exact share of the clock with its remainder carried, and follows the clock.
 //  4. the limit circle: a centre past R reappears at (2R - r, theta + pi), its direction of
 //     travel and facing unchanged on screen (the same carried-frame angles). At K > 0 with
 //     R = pi/sqrt K this is exactly the geodesic continuing through the antipode (tested).
@@ -129,21 +133,23 @@ public:
     }
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 
-    void step(T dt) {
+    // One step of dt seconds.
+    void step(double dt) {
+        const geo::Tick<T> tick = tick_of(dt);
         const int dk = held(Action::curvature_up) - held(Action::curvature_down);
-        if (dk != 0) K = clamp_k(K + T(scene_.curvature_rate) * dt * T(dk));
+        if (dk != 0) K = clamp_k(K + geo::times_dt(T(scene_.curvature_rate) * T(dk), tick));
         if (scene_.sweep_rate != 0) {
-            K = K + T(scene_.sweep_rate) * dt * T(sweep_dir_);
+            K = K + geo::times_dt(T(scene_.sweep_rate) * T(sweep_dir_), tick);
             if (K >= T(1)) K = T(1), sweep_dir_ = -1;
             if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
         }
         const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
         const Steering steer{T(scene_.thrust), turn, game_.top_speed(T(Ranges::kSpeed)), held(Action::thrust)};
         for (Body<T>& b : bodies)
-            if (b.active) step_body(b, dt, steer);
-        time += static_cast<double>(dt);
+            if (b.active) step_body(b, tick, steer);
+        time += dt;
         ++frame;
-        game_.step(*this, dt, held(Action::fire) && !measuring());
+        game_.step(*this, tick.dt, held(Action::fire) && !measuring());
         update_gauges();
     }
 
@@ -197,14 +203,15 @@ private:
         bool thrusting = false;
     };
     // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
-    void step_body(Body<T>& b, T dt, const Steering& steer) const {
+    void step_body(Body<T>& b, const geo::Tick<T>& dt, const Steering& steer) const {
         using geo::dot2, geo::hypot, geo::wrap_pi;  // and fx:: ones by ADL for fixed
         using std::atan2, std::cos, std::sin;
         T a = b.accel, adir = b.accel_dir;
         if (b.desc->controlled && steer.thrusting) a = steer.thrust, adir = b.facing;
         if (a != T(0)) {  // velocity += a dt, in the tangent plane at the centre
-            const T vx = dot2(b.speed, cos(b.travel), a * dt, cos(adir));
-            const T vy = dot2(b.speed, sin(b.travel), a * dt, sin(adir));
+            const T adt = geo::times_dt(a, dt);
+            const T vx = dot2(b.speed, cos(b.travel), adt, cos(adir));
+            const T vy = dot2(b.speed, sin(b.travel), adt, sin(adir));
             b.speed = hypot(vx, vy);
             if (b.speed != T(0)) b.travel = atan2(vy, vx);
             if (b.speed > T(Ranges::kSpeed)) b.speed = T(Ranges::kSpeed);  // the ceiling (ranges.hpp)
@@ -212,7 +219,7 @@ private:
         }
         const bool walked = b.speed != T(0) && engine::move(K, b, dt);
         const T spin = b.desc->controlled ? b.spin + steer.turn : b.spin;
-        if (spin != T(0)) b.facing = wrap_pi(b.facing + spin * dt);
+        if (spin != T(0)) b.facing = geo::turn_by(b.facing, spin, dt, b.spin_rest);
         engine::settle(b, R, walked);  // the limit circle (step 4)
     }
     // The gauges' bodies appended to the scene (our copy), the live one's last.
@@ -232,6 +239,17 @@ private:
         for (const Body<T>& b : bodies)
             if (b.active && b.desc->controlled) return b.centre;
         return {};
+    }
+    // The step of dt from `time`: in fixed point its share of the clock is the difference of
+    // the clock read in Q32 seconds after and before it, so that the shares add up to the clock.
+    geo::Tick<T> tick_of(double dt) const {
+        geo::Tick<T> t;
+        t.dt = T(dt);
+        if constexpr (std::is_same_v<T, fx::fixed>) {
+            constexpr double kQ32 = 4294967296.0;
+            t.q32 = std::llround((time + dt) * kQ32) - std::llround(time * kQ32);
+        }
+        return t;
     }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
     Body<T> make_body(const SceneBody& sb) const {

@@ -61,11 +61,11 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
     render::HudInfo hud;
     w.press(world::Action::thrust);  // the ship accelerates: the velocity path runs too
     w.press(world::Action::curvature_down);
-    for (int i = 0; i < 3; ++i) w.step(T(1.0 / 60)), draw(c, o);  // warm up
+    for (int i = 0; i < 3; ++i) w.step(1.0 / 60), draw(c, o);  // warm up
     g_allocations = 0;
     g_counting = true;
     for (int i = 0; i < frames; ++i) {
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         draw(c, o);
         hud.K = static_cast<double>(w.K);
         render::draw_hud(c, render::builtin_font(), hud);
@@ -117,14 +117,14 @@ long instrument_allocations() {
     const render::Canvas c(px.data(), 800, 480, 800 * 4, render::PixelFormat::xrgb8888());
     w.press(world::Action::thrust);
     w.press(world::Action::curvature_down);
-    w.step(T(1.0 / 60)), render::draw_world(c, w, {}, scratch);
+    w.step(1.0 / 60), render::draw_world(c, w, {}, scratch);
     g_allocations = 0;
     g_counting = true;
     for (int i = 0; i < 400; ++i) {
         if (i % 100 == 0) w.press(world::Action::instrument), w.release(world::Action::instrument);
         if (i % 9 == 0) w.press(world::Action::fire), w.release(world::Action::fire);
         if (i == 200) w.release(world::Action::curvature_down), w.press(world::Action::curvature_up);
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         render::draw_world(c, w, {}, scratch);
         int side = 0;
         for (const auto& g : w.gauges())

@@ -151,7 +151,7 @@ TEST(Script, AControlByteInAnEventIsRefusedNotReadPast) {
         std::string message;  // the whole sentence after "c.txt:1: "
     };
     const std::string expected_time = "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                                      "projection, size, format, aa, hud, font, legend, frames, best) first, found ";
+                                      "projection, size, format, aa, hud, font, legend, frames, best, centre, view) first, found ";
     const Case cases[] = {
         {"1.5\0 press thrust\n"s, expected_time + "'1.5\\x00'"},
         {"1.5\0junk press thrust\n"s, expected_time + "'1.5\\x00junk'"},

@@ -48,7 +48,7 @@ std::vector<std::pair<double, double>> fly(W& w, app::Autopilot& ap, double seco
             if (ev[i].pressed) w.press(a);
             else w.release(a);
         }
-        w.step(typename W::scalar(1.0 / 60));
+        w.step(1.0 / 60);
         k.push_back({w.time, static_cast<double>(w.K)});
     }
     return k;

@@ -54,7 +54,7 @@ struct Setup {
           fb(front.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f),
           m(render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection)) {
         scratch.prepare(wd);
-        for (int i = 0; i < 30; ++i) wd.step(T(1.0 / 60));
+        for (int i = 0; i < 30; ++i) wd.step(1.0 / 60);
         render::draw_world(c, wd, o, scratch);
         for (std::size_t i = 0; i < wd.bodies.size(); ++i) {
             const auto& b = wd.bodies[i];
@@ -70,7 +70,7 @@ struct Setup {
 template <class T>
 void stage(benchmark::State& st, const std::string& which, int w, int h, render::PixelFormat f) {
     Setup<T> s(w, h, f);
-    const T dt(1.0 / 60);
+    const double dt = 1.0 / 60;
     for (auto _ : st) {
         if (which == "step") s.wd.step(dt);
         else if (which == "backdrop") render::draw_backdrop(s.c, s.m, s.o);

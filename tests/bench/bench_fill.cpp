@@ -56,7 +56,7 @@ struct Setup {
           c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f),
           m(render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection)) {
         scratch.prepare(wd);
-        for (int i = 0; i < 30; ++i) wd.step(T(1.0 / 60));
+        for (int i = 0; i < 30; ++i) wd.step(1.0 / 60);
         render::draw_world(c, wd, o, scratch);
         std::fill(back.begin(), back.end(), 0);
         fills();

@@ -23,7 +23,7 @@ void frame(benchmark::State& st, int w, int h, render::PixelFormat f, bool aa) {
     const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     render::DrawOptions o;
     o.antialias = aa;
-    const T dt(1.0 / 60);
+    const double dt = 1.0 / 60;
     for (auto _ : st) {
         wd.step(dt);
         render::draw_world(c, wd, o, scratch);

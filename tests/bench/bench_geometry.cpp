@@ -38,7 +38,7 @@ world::World<T> make_world(const char* scene_name) {
     world::builtin_scene(scene_name, {}, scene);
     if (std::string(scene_name) == "kiosk") scene.curvature = -0.6;
     world::World<T> w(scene);
-    for (int i = 0; i < 30; ++i) w.step(T(1.0 / 60));
+    for (int i = 0; i < 30; ++i) w.step(1.0 / 60);
     return w;
 }
 

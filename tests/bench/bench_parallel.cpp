@@ -43,7 +43,7 @@ void frame(benchmark::State& st, const char* scene_name, int w, int h, render::P
     std::vector<uint8_t> px(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * static_cast<std::size_t>(f.bytes_per_pixel()));
     const render::Canvas c(px.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::DrawOptions o;
-    const T dt(1.0 / 60);
+    const double dt = 1.0 / 60;
     const std::clock_t c0 = std::clock();
     for (auto _ : st) {
         wd.step(dt);

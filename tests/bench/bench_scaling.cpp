@@ -38,7 +38,7 @@ void run(benchmark::State& st, Point p, bool raster) {
     world::World<T> wd(scene);
     render::DrawScratch<T> scratch;
     scratch.prepare(wd);
-    for (int k = 0; k < 10; ++k) wd.step(T(1.0 / 60));
+    for (int k = 0; k < 10; ++k) wd.step(1.0 / 60);
     std::vector<uint8_t> px(800 * 480 * 2);
     const render::Canvas c(px.data(), 800, 480, 1600, render::PixelFormat::rgb565());
     const render::DrawOptions o;

@@ -129,7 +129,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     if (game) {  // in play: fire held, turning, until the bullets are all in flight
         wd.press(world::Action::fire);
         wd.press(world::Action::turn_left);
-        for (int i = 0; i < 60 * 2; ++i) wd.step(T(1.0 / 60));
+        for (int i = 0; i < 60 * 2; ++i) wd.step(1.0 / 60);
         // Hits split asteroids: as many as asked for, the first ones kept.
         int kept = 0, flying = 0;
         for (auto& b : wd.bodies) {
@@ -149,7 +149,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     const render::Canvas c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::Canvas fb(front.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::DrawOptions o;
-    const T dt(1.0 / 60);
+    const double dt = 1.0 / 60;
     auto frame = [&] {
         wd.step(dt);
         if (threads > 1)
@@ -207,7 +207,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
             }
         } else if (stage == "copy") render::copy_canvas(c, fb);
         else if (stage == "memcpy") std::memcpy(front.data(), back.data(), bytes);
-        else if (stage == "collide") check += static_cast<uint64_t>(collide(wd, dt));
+        else if (stage == "collide") check += static_cast<uint64_t>(collide(wd, T(dt)));
         else if (stage == "fill") fills();
         else if (stage == "fillmemset") std::memset(back.data(), static_cast<int>(i & 255), covered * static_cast<std::size_t>(f.bytes_per_pixel()));
         else {

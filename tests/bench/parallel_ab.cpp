@@ -101,7 +101,7 @@ void compare(const char* scene_name, int w, int h, render::PixelFormat f, int fr
     std::vector<uint8_t> px3(px.size()), px4(px.size());
     const render::Canvas c3(px3.data(), w, h, c.stride(), f), c4(px4.data(), w, h, c.stride(), f);
     const render::DrawOptions o;
-    const T dt(1.0 / 60);
+    const double dt = 1.0 / 60;
     world::World<T>* const own_world[2] = {&w3, &w4};
     const render::Canvas* const own_canvas[2] = {&c3, &c4};
     auto two_alone = [&](int t) {

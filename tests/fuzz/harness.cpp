@@ -110,9 +110,8 @@ bool finite_world(const auto& w) {
 // Steps `w` `frames` frames with the script's events, then dumps its last frame.
 template <class W>
 std::string run_world(W& w, const app::Script& script, int frames, geo::Projection projection) {
-    using T = typename W::scalar;
     app::ScriptPlayer player(script.events);
-    const T dt = T(1.0 / 60);
+    const double dt = 1.0 / 60;
     for (int f = 0; f < frames; ++f) {
         while (const app::ScriptEvent* e = player.next_due(w.time)) {
             world::Action a{};

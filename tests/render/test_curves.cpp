@@ -29,7 +29,7 @@ testing::CurveCheck run_and_check(world::Scene s, double K, int frames, int ever
     const bool first = testing::thin() == 1 || every <= frames;
     for (int f = 0; f <= frames; ++f) {
         if ((f % every == 0 && (f > 0 || first)) || f == frames) all.add(testing::check_world(world, p, w, h));
-        world.step(typename W::scalar(1.0 / 60));
+        world.step(1.0 / 60);
     }
     return all;
 }

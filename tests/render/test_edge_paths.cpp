@@ -136,7 +136,7 @@ void shape_is_direct(const char* scene_name, double K0) {
             }
         }
         w.press(world::Action::curvature_up);  // K changes: the next refresh recomputes
-        w.step(T(0.1));
+        w.step(0.1);
     }
 }
 

@@ -247,7 +247,7 @@ TEST(FastPaths, HalvingPointsAreOnTheGeodesic) {
             render::DrawScratch<double> sd;
             sf.prepare(wf), sl.prepare(wl), sd.prepare(wd);
             for (int frame = 0; frame < 3; ++frame) {
-                wf.step(fixed(0.5)), wl.step(0.5f), wd.step(0.5);
+                wf.step(0.5), wl.step(0.5), wd.step(0.5);
                 const auto mf = render::ScreenMap<fixed>::of(W, H, wf.K, wf.R, proj);
                 const auto ml = render::ScreenMap<float>::of(W, H, wl.K, wl.R, proj);
                 const auto md = render::ScreenMap<double>::of(W, H, wd.K, wd.R, proj);

@@ -52,7 +52,7 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     o.antialias = aa;
     o.line_width = v.width;
     for (int i = 0; i < 12; ++i) {
-        w.step(T(0.05));
+        w.step(0.05);
         render::draw_world(ca, w, o, serial, v.backdrop);
         render::draw_world(cb, w, o, par, pool, v.backdrop);
         ASSERT_EQ(a, b) << scene_name << " K " << K << " threads " << threads << " frame " << i;

@@ -123,7 +123,8 @@ Result compare(const world::Scene& s, const ProjRow& row, double view, const std
     const double rim = row.radius(std::fmin(view / kEarthKm, row.cut));
     const double scale = std::fmin(size.w, size.h) / 2.0 / rim, clip = static_cast<double>(m.clip) / geo::kSub;
     Result r;
-    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+    // (The scene's own bodies, one point each: the world's instruments follow them, off.)
+    for (std::size_t i = 0; i < s.bodies.size() && i < proj.size(); ++i) {
         geo::Polar<T> verts[1];
         geo::Vec3<T> vecs[1];
         geo::SubPoint out[8];

@@ -3,6 +3,7 @@
 // it, named with its place: tests/files/test_scene_file.cpp.)
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
 #include "test_common.hpp"
@@ -52,3 +53,39 @@ TEST(Budget, GridsAndTheStressSceneOverItAreRefusedBeforeAnythingIsBuilt) {
 }
 
 }  // namespace
+
+// Decoded images count against the budget once each, however many bodies share one (issue 33):
+// the bytes are the texels' (4 a texel), added up independently here.
+TEST(Budget, ImagesCountOnceEachAgainstTheBudget) {
+    auto image = [](int side) {
+        auto im = std::make_shared<Image>();
+        im->width = im->height = side;
+        im->texels.assign(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
+        return im;
+    };
+    EXPECT_EQ(image_bytes(*image(1024)), 4LL << 20);
+    Scene s;
+    std::string why;
+    SceneBody b;
+    b.vertices = {{0.1, 0}, {0.1, 120}, {0.1, 240}};
+    // 2,048 bodies sharing one 1024 x 1024 image: 4 MiB, not 8 GiB.
+    b.texture = image(1024);
+    s.bodies.assign(2048, b);
+    EXPECT_TRUE(within_budget(s, why)) << why;
+    // Sixteen distinct images of the largest size are the budget; a seventeenth is over it.
+    s.bodies.clear();
+    for (int i = 0; i < 16; ++i) {
+        b.texture = image(1024);
+        s.bodies.push_back(b);
+    }
+    EXPECT_TRUE(within_budget(s, why)) << why;
+    s.game.asteroid_texture = image(64);  // the game's asteroid image counts too
+    EXPECT_FALSE(within_budget(s, why));
+    EXPECT_EQ(why, "the scene's texture images would take 67,125,248 bytes decoded, over the 64 MiB a world may have: use "
+                   "fewer or smaller images");
+    EXPECT_EQ(67125248LL, 16 * 1024 * 1024 * 4LL + 64 * 64 * 4LL);
+    // As a scene is read: the images held and the next one.
+    EXPECT_TRUE(images_allow(60LL << 20, 4LL << 20, why)) << why;
+    EXPECT_FALSE(images_allow(60LL << 20, (4LL << 20) + 4, why));
+    EXPECT_NE(why.find("over the 64 MiB"), std::string::npos) << why;
+}

@@ -159,11 +159,14 @@ template <class T>
 Drift drift(double K, const std::vector<long>& checkpoints) {
     const Scene scene = coasting_scene(K);
     World<T> w(scene);
-    const T dt = T(1.0 / 60);
+    const double dt = 1.0 / 60;
+    // The step's time as the engine moves by it: the clock's exactly (in fixed point its share
+    // in Q32 seconds, within 2^-32 s of the sum), float's own rounding of it in float.
+    const LD step_dt = std::is_same_v<T, float> ? static_cast<LD>(static_cast<float>(dt)) : static_cast<LD>(dt);
     const LD LK = static_cast<double>(w.K), LR = static_cast<double>(w.R);
     std::vector<ExactPath> paths;
     for (const Body<T>& b : w.bodies)
-        paths.emplace_back(LK, LR, static_cast<LD>(static_cast<double>(b.speed)) * static_cast<LD>(static_cast<double>(dt)),
+        paths.emplace_back(LK, LR, static_cast<LD>(static_cast<double>(b.speed)) * step_dt,
                            static_cast<double>(b.centre.r), static_cast<double>(b.centre.theta), static_cast<double>(b.travel));
     std::vector<T> speed, travel;
     for (const Body<T>& b : w.bodies) speed.push_back(b.speed), travel.push_back(b.travel);

@@ -42,9 +42,8 @@ int first(const W& w, BodyKind k) {
 // Steps until an event of `kind` (at most `steps`); the number of steps taken, -1 if none came.
 template <class W>
 int until(W& w, GameEvent::Kind kind, int steps, GameEvent* got = nullptr) {
-    using T = typename W::scalar;
     for (int i = 1; i <= steps; ++i) {
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         for (int e = 0; e < w.game().event_count(); ++e)
             if (w.game().events()[e].kind == kind) {
                 if (got) *got = w.game().events()[e];
@@ -59,9 +58,9 @@ void start(W& w) {
     w.press(Action::fire);
     w.release(Action::fire);
     EXPECT_EQ(w.game().phase, GamePhase::ready) << "a game begins at the next step";
-    w.step(typename W::scalar(1.0 / 60));
+    w.step(1.0 / 60);
     ASSERT_EQ(w.game().phase, GamePhase::playing);
-    while (w.time < w.game().invulnerable_until() + 0.1) w.step(typename W::scalar(1.0 / 60));
+    while (w.time < w.game().invulnerable_until() + 0.1) w.step(1.0 / 60);
 }
 // Moves the body to `at`, still (or moving at `speed` along `travel`).
 template <class B>
@@ -103,7 +102,7 @@ void a_shot_leaves_the_nose_with_the_ships_velocity() {
         ship.facing = T(-0.7);
         const double v = w.scene().game.bullet_speed, nose = 0.12;
         w.press(Action::fire);
-        w.step(T(1.0 / 60));  // moves the ship one step, then fires from where it is
+        w.step(1.0 / 60);  // moves the ship one step, then fires from where it is
         const int b = first(w, BodyKind::bullet);
         ASSERT_GE(b, 0);
         const auto& bullet = w.bodies[static_cast<std::size_t>(b)];
@@ -189,7 +188,7 @@ void splits_and_scores() {
         w.bodies[static_cast<std::size_t>(s)].facing = T(kPi / 2);
         const uint32_t serial = w.bodies[static_cast<std::size_t>(a)].serial;
         const Polar<T> where = w.bodies[static_cast<std::size_t>(a)].centre;
-        while (w.time < w.game().next_shot()) w.step(T(1.0 / 60));
+        while (w.time < w.game().next_shot()) w.step(1.0 / 60);
         w.press(Action::fire);
         GameEvent hit;
         ASSERT_GT(until(w, GameEvent::hit, 120, &hit), 0);
@@ -215,7 +214,7 @@ void splits_and_scores() {
             for (std::size_t i = static_cast<std::size_t>(p) + 1; i < w.bodies.size(); ++i)
                 if (w.bodies[i].active && w.bodies[i].desc->kind() == BodyKind::asteroid) q = static_cast<int>(i);
             const T d0 = noneuclid::geo::distance(w.K, w.bodies[static_cast<std::size_t>(p)].centre, w.bodies[static_cast<std::size_t>(q)].centre);
-            for (int i = 0; i < 30; ++i) w.step(T(1.0 / 60));
+            for (int i = 0; i < 30; ++i) w.step(1.0 / 60);
             const T d1 = noneuclid::geo::distance(w.K, w.bodies[static_cast<std::size_t>(p)].centre, w.bodies[static_cast<std::size_t>(q)].centre);
             EXPECT_GT(d1, d0 + T(0.5 * g.split_speed));  // apart at 2 split_speed, for half a second
         }
@@ -250,7 +249,7 @@ TEST(Game, CrashesLivesRespawnAndGameOver) {
         EXPECT_EQ(w.game().phase, GamePhase::playing);
         // Back after the respawn delay, at O, at rest.
         const double crashed = w.time;
-        while (!sh.active) w.step(fixed(1.0 / 60));
+        while (!sh.active) w.step(1.0 / 60);
         EXPECT_NEAR(w.time - crashed, g.respawn_delay, 1.0 / 60 + 1e-9);
         EXPECT_EQ(sh.centre.r, fixed(0));
         EXPECT_EQ(sh.speed, fixed(0));
@@ -259,14 +258,14 @@ TEST(Game, CrashesLivesRespawnAndGameOver) {
         int hidden = 0, shown = 0;
         while (w.time < w.game().invulnerable_until() - 1.0 / 60) {
             place(w.bodies[static_cast<std::size_t>(b)], 0, 0);
-            w.step(fixed(1.0 / 60));
+            w.step(1.0 / 60);
             for (int e = 0; e < w.game().event_count(); ++e) EXPECT_NE(w.game().events()[e].kind, GameEvent::crash);
             (sh.hidden ? hidden : shown)++;
         }
         EXPECT_GT(hidden, 5);
         EXPECT_GT(shown, 5);
         place(w.bodies[static_cast<std::size_t>(b)], 2.5, 0);
-        w.step(fixed(1.0 / 60));
+        w.step(1.0 / 60);
         EXPECT_FALSE(sh.hidden);
     }
     EXPECT_EQ(w.game().phase, GamePhase::over);
@@ -274,11 +273,11 @@ TEST(Game, CrashesLivesRespawnAndGameOver) {
     w.press(Action::fire), w.release(Action::fire);
     EXPECT_EQ(w.game().phase, GamePhase::over);
     const double over = w.game().phase_since;
-    while (w.game().phase == GamePhase::over) w.step(fixed(1.0 / 60));
+    while (w.game().phase == GamePhase::over) w.step(1.0 / 60);
     EXPECT_NEAR(w.time - over, g.game_over_seconds, 1.0 / 60 + 1e-9);
     EXPECT_EQ(w.game().phase, GamePhase::ready);
     w.press(Action::fire);
-    w.step(fixed(1.0 / 60));
+    w.step(1.0 / 60);
     EXPECT_EQ(w.game().phase, GamePhase::playing);
     EXPECT_EQ(w.game().lives, g.lives);
     EXPECT_EQ(w.game().score, 0);
@@ -321,9 +320,9 @@ void limit_circle_rule() {
         place(w.bodies[static_cast<std::size_t>(a)], kPi - 0.05, 0);
         const int s = ship_index(w);
         w.bodies[static_cast<std::size_t>(s)].facing = T(-kPi / 2);  // away from both
-        while (w.time < w.game().next_shot()) w.step(T(1.0 / 60));
+        while (w.time < w.game().next_shot()) w.step(1.0 / 60);
         w.press(Action::fire);
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         w.release(Action::fire);
         const int b = first(w, BodyKind::bullet);
         ASSERT_GE(b, 0);
@@ -346,9 +345,9 @@ void limit_circle_rule() {
             clear_all_but(v, a2);
             place(v.bodies[static_cast<std::size_t>(a2)], kPi - 0.05, 0);
             v.bodies[static_cast<std::size_t>(ship_index(v))].facing = T(-kPi / 2);
-            while (v.time < v.game().next_shot()) v.step(T(1.0 / 60));
+            while (v.time < v.game().next_shot()) v.step(1.0 / 60);
             v.press(Action::fire);
-            v.step(T(1.0 / 60));
+            v.step(1.0 / 60);
             v.release(Action::fire);
             place(v.bodies[static_cast<std::size_t>(first(v, BodyKind::bullet))], kPi - 0.05, kPi, 0.6, 0);
             EXPECT_EQ(until(v, GameEvent::hit, 90), -1);
@@ -374,7 +373,7 @@ TEST(Game, ASeedReplaysBitForBit) {
             if (i % 97 == 40) w.release(Action::turn_left);
             if (i % 50 == 0) w.press(Action::fire);
             if (i % 50 == 25) w.release(Action::fire);
-            w.step(fixed(1.0 / 60));
+            w.step(1.0 / 60);
             for (int e = 0; e < w.game().event_count(); ++e) {
                 const GameEvent& ev = w.game().events()[e];
                 hits += ev.kind == GameEvent::hit;

@@ -67,7 +67,7 @@ TEST(Instruments, FixedReadingsWithinTheBoundsOfDoubleWhileKSweeps) {
                 case geo::Instrument::polygon: angle(a.polygon.angle_deg, b.polygon.angle_deg), angle(a.polygon.gap_deg, b.polygon.gap_deg); break;
             }
         }
-        f.step(fx::fixed(1.0 / 60));
+        f.step(1.0 / 60);
     }
     RecordProperty("worst_angle_deg", std::to_string(worst_angle));
     RecordProperty("worst_relative", std::to_string(worst_rel));
@@ -128,15 +128,15 @@ TEST(Instruments, TheLiveInstrumentTakesItsMarksWhereTheShipIs) {
     std::vector<geo::Polar<double>> at;
     w.press(Action::thrust);
     for (int mark = 0; mark < 3; ++mark) {
-        for (int i = 0; i < 40; ++i) w.step(fx::fixed(1.0 / 60));
+        for (int i = 0; i < 40; ++i) w.step(1.0 / 60);
         w.press(Action::turn_left);
-        for (int i = 0; i < 30; ++i) w.step(fx::fixed(1.0 / 60));
+        for (int i = 0; i < 30; ++i) w.step(1.0 / 60);
         w.release(Action::turn_left);
         at.push_back({static_cast<double>(ship->centre.r), static_cast<double>(ship->centre.theta)});
         w.press(Action::fire), w.release(Action::fire);
         EXPECT_EQ(w.game().on(), false);
     }
-    w.step(fx::fixed(1.0 / 60));
+    w.step(1.0 / 60);
     const GaugeReading& r = w.gauges().back().reading();
     ASSERT_FALSE(r.waiting);
     ASSERT_EQ(r.error, geo::MeasureError::none);

@@ -106,7 +106,6 @@ bool all_finite(const W& w, std::string& where) {
 // is what it is there to show.
 template <class W>
 void run_and_check(W w, int frames, const char* engine, int scene_index, bool finite = true) {
-    using T = typename W::scalar;
     w.press(world::Action::thrust);
     for (int f = 0; f < frames; ++f) {
         if (f % 40 == 0) {  // K down for a while, then up
@@ -114,7 +113,7 @@ void run_and_check(W w, int frames, const char* engine, int scene_index, bool fi
             w.press(f % 80 ? world::Action::curvature_up : world::Action::curvature_down);
             w.press(f % 80 ? world::Action::turn_left : world::Action::turn_right);
         }
-        w.step(T(1.0 / 60));
+        w.step(1.0 / 60);
         std::string where;
         if (!finite)
             continue;
@@ -209,7 +208,7 @@ TEST(Ranges, AccelerationStopsAtTheSpeedCeiling) {
     world::World<fixed> wf(s);
     world::World<double> wd(s);
     for (int f = 0; f < 600; ++f)
-        wf.step(fixed(1.0 / 60)), wd.step(1.0 / 60);
+        wf.step(1.0 / 60), wd.step(1.0 / 60);
     EXPECT_NEAR(static_cast<double>(wf.bodies[0].speed), Ranges::kSpeed, 1e-4);
     EXPECT_DOUBLE_EQ(wd.bodies[0].speed, Ranges::kSpeed);
 }

@@ -5,6 +5,9 @@
 // with libpng, or cut from such a file.
 #include <gtest/gtest.h>
 #include <png.h>
+#include <zlib.h>
+
+#include <algorithm>
 
 #include <cstdio>
 #include <filesystem>
@@ -228,6 +231,137 @@ TEST(TextureFiles, BuiltInImagesNeedNoFile) {
     ASSERT_TRUE(files::parse_scene(body + "fill = \"#102030\"\n", "s.toml", s, e)) << e.to_string();
     EXPECT_TRUE(s.bodies[0].filled);
     EXPECT_EQ(s.bodies[0].fill, (world::Rgb{16, 32, 48}));
+}
+
+// A scene of one body per spelling, each naming its texture as spelt.
+std::string scene_of_spellings(const TempDir& d, const std::vector<std::string>& spellings) {
+    std::string text;
+    for (const std::string& t : spellings)
+        text += "[[body]]\nvertices = [[0.05, 0], [0.05, 120], [0.05, 240]]\ntexture = \"" + t + "\"\n";
+    const std::string path = d.file("many.toml");
+    write_bytes(path, text);
+    return path;
+}
+
+// One 1024 x 1024 PNG named by 2,048 bodies, each spelling its path differently (and through a
+// link): decoded once, one image shared by every body, not 2,048 images of 4 MiB (issue 33: that
+// was 8 GiB and std::bad_alloc).
+TEST(TextureFiles, OneFileUnderManySpellingsIsDecodedOnce) {
+    TempDir d;
+    fs::create_directories(d.file("art"));
+    write_rgb(d.file("art/t.png"), 1024, 1024);
+    fs::create_symlink("t.png", d.file("art/link.png"));
+    std::vector<std::string> spellings;
+    for (int i = 0; i < 2046; ++i) {  // "art/t.png", "./art/t.png", ".//art/./t.png", ...
+        std::string s;
+        for (int bit = 0; bit < 11; ++bit)
+            if (i >> bit & 1) s += bit % 2 ? ".//" : "./";
+        spellings.push_back(s + (i % 3 == 0 ? "art/t.png" : i % 3 == 1 ? "art/./t.png" : "art//t.png"));
+    }
+    spellings.push_back("art/link.png");
+    spellings.push_back(d.file("art/t.png"));  // absolute
+    world::Scene s;
+    files::SceneError e;
+    ASSERT_TRUE(files::load_scene_file(scene_of_spellings(d, spellings), s, e, platform::read_texture,
+                                       platform::file_identity))
+        << e.to_string();
+    ASSERT_EQ(s.bodies.size(), 2048u);
+    for (const world::SceneBody& b : s.bodies) ASSERT_EQ(b.texture, s.bodies[0].texture) << b.name;
+    EXPECT_EQ(s.bodies[0].texture->at(1000, 3), uint32_t(1000 & 255) << 16 | 3 << 8 | ((1000 ^ 3) & 255));
+    // Two files with the same bytes are two images.
+    fs::copy_file(d.file("art/t.png"), d.file("art/copy.png"));
+    ASSERT_TRUE(files::load_scene_file(scene_of_spellings(d, {"art/t.png", "art/copy.png"}), s, e,
+                                       platform::read_texture, platform::file_identity))
+        << e.to_string();
+    EXPECT_NE(s.bodies[0].texture, s.bodies[1].texture);
+    EXPECT_EQ(platform::file_identity(d.file("art/nothing.png")), "");
+}
+
+// Images decoded count against the world's budget (64 MiB: sixteen of the largest size) as the
+// scene is read: the seventeenth distinct 1024 x 1024 file is refused at its place, before any
+// later one is decoded.
+TEST(TextureFiles, DecodedImagesOverTheBudgetAreRefused) {
+    TempDir d;
+    write_rgb(d.file("c0.png"), 1024, 1024);
+    std::vector<std::string> names{"c0.png"};
+    for (int i = 1; i < 18; ++i) {
+        names.push_back("c" + std::to_string(i) + ".png");
+        fs::copy_file(d.file("c0.png"), d.file(names.back()));
+    }
+    world::Scene s;
+    files::SceneError e;
+    ASSERT_TRUE(files::load_scene_file(scene_of_spellings(d, std::vector<std::string>(names.begin(), names.begin() + 16)),
+                                       s, e, platform::read_texture, platform::file_identity))
+        << e.to_string();
+    EXPECT_FALSE(files::load_scene_file(scene_of_spellings(d, names), s, e, platform::read_texture, platform::file_identity));
+    EXPECT_EQ(e.line, 3 * 17);  // the seventeenth body's texture
+    EXPECT_NE(e.message.find("texture 'c16.png': the scene's texture images would take 68 MiB decoded, over the 64 MiB "
+                             "a world may have: use fewer or smaller images"),
+              std::string::npos)
+        << e.message;
+    EXPECT_EQ(68 << 20, 17 * 1024 * 1024 * 4);  // 17 images of 1024 x 1024 texels, 4 bytes each
+}
+
+// A PNG chunk: length, type, data, CRC.
+std::string png_chunk(const char* type, const std::string& data) {
+    auto be32 = [](uint32_t v) {
+        return std::string{static_cast<char>(v >> 24), static_cast<char>(v >> 16), static_cast<char>(v >> 8), static_cast<char>(v)};
+    };
+    const std::string body = std::string(type, 4) + data;
+    const uLong crc = crc32(0, reinterpret_cast<const Bytef*>(body.data()), static_cast<uInt>(body.size()));
+    return be32(static_cast<uint32_t>(data.size())) + body + be32(static_cast<uint32_t>(crc));
+}
+// The first IDAT chunk of png_bomb: at most its first 4 KiB.
+constexpr std::size_t kBombFirstIdat = 4096;
+// A 16 x 16 8-bit RGB PNG whose image data is the zlib stream of its rows (every byte 0: filter
+// none, black) followed by `extra` more zero bytes: a stream that inflates far past what the
+// header promises, as a bomb does.
+std::string png_bomb(std::size_t extra) {
+    const std::size_t rows = 16 * (1 + 16 * 3);
+    z_stream z{};
+    EXPECT_EQ(deflateInit(&z, 9), Z_OK);
+    const std::vector<Bytef> zeros(1 << 20, 0);
+    std::string idat;
+    std::vector<Bytef> out(1 << 16);
+    for (std::size_t left = rows + extra; ;) {
+        const std::size_t n = std::min(left, zeros.size());
+        left -= n;
+        z.next_in = const_cast<Bytef*>(zeros.data()), z.avail_in = static_cast<uInt>(n);
+        int ret;
+        do {
+            z.next_out = out.data(), z.avail_out = static_cast<uInt>(out.size());
+            ret = deflate(&z, left == 0 ? Z_FINISH : Z_NO_FLUSH);
+            idat.append(reinterpret_cast<const char*>(out.data()), out.size() - z.avail_out);
+        } while (z.avail_out == 0 || (left == 0 && ret != Z_STREAM_END));
+        if (left == 0) break;
+    }
+    deflateEnd(&z);
+    const std::string ihdr{0, 0, 0, 16, 0, 0, 0, 16, 8, 2, 0, 0, 0};  // 16 x 16, 8-bit RGB
+    // Two IDAT chunks when the stream is long enough: the reader follows the stream across them.
+    const std::size_t first = std::min(idat.size(), kBombFirstIdat);
+    return std::string("\x89PNG\r\n\x1a\n", 8) + png_chunk("IHDR", ihdr) + png_chunk("IDAT", idat.substr(0, first)) +
+           (first < idat.size() ? png_chunk("IDAT", idat.substr(first)) : std::string()) + png_chunk("IEND", "");
+}
+
+// Image data that inflates past what the header promises is refused, inflated no further than
+// that (issue 33: a 4 MiB file that inflated to 4 GiB took 11 s of CPU before it was accepted;
+// docs/performance.md has the times). The same stream without the extra bytes is read.
+TEST(TextureFiles, ImageDataThatInflatesPastItsRowsIsRefused) {
+    TempDir d;
+    const std::string bomb = png_bomb(std::size_t{64} << 20);
+    ASSERT_LT(bomb.size(), std::size_t{1} << 20);  // 64 MiB of zeros in well under 1 MiB
+    write_bytes(d.file("bomb.png"), bomb);
+    const std::string m = refused(scene_with(d, "bomb.png"));
+    EXPECT_NE(m.find("bomb.png: its compressed image data inflates to more than the 16 x 16 texels its header gives "
+                     "(damaged, or made to exhaust memory): save the image again"),
+              std::string::npos)
+        << m;
+    write_bytes(d.file("plain.png"), png_bomb(0));
+    world::Scene s;
+    const world::Image& plain = loaded(scene_with(d, "plain.png"), s);
+    ASSERT_EQ(plain.width, 16);
+    ASSERT_EQ(plain.texels.size(), 256u);
+    for (uint32_t t : plain.texels) EXPECT_EQ(t, 0u);
 }
 
 }  // namespace
