@@ -38,7 +38,7 @@ testing::CurveCheck run_and_check(world::Scene s, double K, int frames, int ever
 void expect(const testing::CurveCheck& c, const std::string& what) {
     EXPECT_LE(c.worst, kWithin) << what << ": a drawn pixel " << c.worst << " px from the curve (" << c.worst_body << ")";
     EXPECT_LE(c.gap, kGap) << what << ": the curve " << c.gap << " px from the drawing (" << c.gap_body << ")";
-    EXPECT_GT(c.pixels, 1000) << what;  // not vacuous
+    EXPECT_GT(c.pixels, 500) << what;  // not vacuous (figure 2's two geodesics: about 700)
     std::printf("%-40s worst %.3f px, gap %.3f px, %ld pixels, %ld reference points\n", what.c_str(), c.worst, c.gap,
                 c.pixels, c.samples);
 }

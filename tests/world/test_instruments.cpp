@@ -140,7 +140,10 @@ TEST(Instruments, TheLiveInstrumentTakesItsMarksWhereTheShipIs) {
     const GaugeReading& r = w.gauges().back().reading();
     ASSERT_FALSE(r.waiting);
     ASSERT_EQ(r.error, geo::MeasureError::none);
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(test::plane_distance(r.points[k], at[static_cast<std::size_t>(k)]), 0) << k;
+    for (int k = 0; k < 3; ++k) {  // the same Q16.16 numbers, read in double
+        EXPECT_EQ(r.points[k].r, at[static_cast<std::size_t>(k)].r) << k;
+        EXPECT_EQ(r.points[k].theta, at[static_cast<std::size_t>(k)].theta) << k;
+    }
     // Cycled on: circle, parallels, polygon, then off.
     for (geo::Instrument next : {geo::Instrument::circle, geo::Instrument::parallels, geo::Instrument::polygon}) {
         w.press(Action::instrument);
