@@ -1,6 +1,7 @@
 #include "render/measure_panel.hpp"
 
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 
@@ -8,10 +9,13 @@ namespace noneuclid::render {
 
 namespace {
 
-template <class... A>
-void line(MeasurePanel& p, const char* format, A... args) {
+// A line by a printf format (checked at each call: the attribute).
+[[gnu::format(printf, 2, 3)]] void line(MeasurePanel& p, const char* format, ...) {
     if (p.lines >= MeasurePanel::kLines) return;
-    std::snprintf(p.text[p.lines++], MeasurePanel::kWidth, format, args...);
+    std::va_list args;
+    va_start(args, format);
+    std::vsnprintf(p.text[p.lines++], MeasurePanel::kWidth, format, args);
+    va_end(args);
 }
 
 // A sentence in lines of at most `width` characters, broken at spaces.
