@@ -107,7 +107,7 @@ public:
 private:
     std::string path_, temp_;
     std::FILE* file_ = nullptr;
-    bool stream_ = false;  // written into (a FIFO, standard output): no temporary file
+    [[maybe_unused]] bool stream_ = false;  // written into (a FIFO, standard output): no temporary file (POSIX only: the web platform has no such files)
 };
 
 // Files the program keeps and shares between processes (the high-score table,
