@@ -7,13 +7,8 @@
 #  - SIGTERM while the world runs, and SIGINT while the PNG is written: the same.
 #   output_safety.sh NONEUCLID
 set -uo pipefail
-noneuclid=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-failures=0
-fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
-pass() { echo "PASS $*"; }
+# shellcheck source=tests/cli/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 # expect NAME STATUS STDERR_PART COMMAND...: the exit status and one line naming the problem.
 expect() {
     local name=$1 want=$2 part=$3 rc=0

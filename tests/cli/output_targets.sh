@@ -12,13 +12,9 @@
 # similar name are left alone.
 #   output_targets.sh NONEUCLID
 set -uo pipefail
-noneuclid=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-tmp=$(mktemp -d)
+# shellcheck source=tests/cli/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 trap 'kill $(jobs -p) 2> /dev/null; rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-failures=0
-fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
-pass() { echo "PASS $*"; }
 
 # cmd: the command that writes FILE through OPTION (one of the four), small and quick.
 command_for() {

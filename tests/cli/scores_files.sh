@@ -9,13 +9,8 @@
 # without keeping scores, the file untouched.
 #   scores_files.sh NONEUCLID
 set -uo pipefail
-noneuclid=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cd "$tmp" || exit 1
-failures=0
-fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
-pass() { echo "PASS $*"; }
+# shellcheck source=tests/cli/test_lib.sh
+. "$(dirname "${BASH_SOURCE[0]}")/test_lib.sh"
 describe() { stat -c '%F %t:%T %s %a %i %Y' "$1" 2>/dev/null; readlink "$1"; }
 listing() { timeout 60 "$noneuclid" scores --scores "$1"; }
 playing() { timeout 60 "$noneuclid" run --display png --scene asteroids --frames 2 --size 64x64 --screenshot shot.png --scores "$1"; }
