@@ -26,21 +26,9 @@
 
 namespace noneuclid::testing {
 
-// How much of the within-one-pixel checks a run does. Whole: every frame and scene the tests
-// name. Under the sanitizers (NONEUCLID_SANITIZED, set by noneuclid_optimise_when_sanitized in
-// tests/CMakeLists.txt) a check costs ten to twenty times as much and the whole set takes many
-// minutes, so such builds run every `thin()`-th of the sampled frames and scenes (the first and
-// last kept) unless the environment says NONEUCLID_CURVES=whole. The release build runs them
-// whole (platform/debian/run-tests).
-inline bool curves_whole() {
-#ifdef NONEUCLID_SANITIZED
-    const char* e = std::getenv("NONEUCLID_CURVES");
-    return e != nullptr && std::string(e) == "whole";
-#else
-    return true;
-#endif
-}
-inline int thin() { return curves_whole() ? 1 : 4; }
+// The length of (dx, dy): screen distances here are at most a few thousand pixels, so the plain
+// square root is exact enough and much cheaper than std::hypot's care for overflow.
+inline double px_distance(double dx, double dy) { return std::sqrt(dx * dx + dy * dy); }
 
 // The bounds the checks assert. Within: the one pixel. Gap: a thin polyline leaves none
 // of its points more than sqrt 1.25 = 1.12 px from a lit pixel's centre (raster.hpp, tested in
@@ -78,6 +66,16 @@ public:
         clip_ = rim_;
         if (K > 0 && (p == geo::Projection::azimuthal_equidistant || p == geo::Projection::lambert_equal_area))
             clip_ = std::min(rim_, rho(pi / s, vis) * scale_ - 1.0);
+        // The farthest distance from O a kept point can have (every projection here is azimuthal
+        // and its rho grows with r where it shows r, so "kept" is r <= keep_r_), by bisection.
+        double lo = 0, hi = K > 0 ? pi / s : 1.0;
+        while (K <= 0 && screen({hi, 0}).kept && hi < 1e6) lo = hi, hi *= 2;
+        if (screen({hi, 0}).kept) lo = hi;
+        for (int i = 0; i < 100 && lo < hi; ++i) {
+            const double mid = (lo + hi) / 2;
+            (screen({mid, 0}).kept ? lo : hi) = mid;
+        }
+        keep_r_ = lo;
     }
     // rho of a point at distance r; false where the view does not show it.
     double rho(double r, bool& visible) const {
@@ -105,24 +103,27 @@ public:
         double x = 0, y = 0;
         bool visible = false, inside = false, kept = false;
         double from_centre = 0;
+        double r = 0;  // the point's distance from O in the world
     };
     At screen(geo::Polar<double> q) const {
         At a;
+        a.r = q.r;
         const double r = rho(q.r, a.visible);
         if (!a.visible || !std::isfinite(r)) return a.visible = false, a;
         a.x = cx_ + scale_ * r * std::cos(q.theta), a.y = cy_ - scale_ * r * std::sin(q.theta);
-        a.from_centre = std::hypot(a.x - cx_, a.y - cy_);
+        a.from_centre = px_distance(a.x - cx_, a.y - cy_);
         a.inside = a.from_centre <= clip_;
         a.kept = a.from_centre <= rim_ + 2;
         return a;
     }
     double clip() const { return clip_; }
+    double keep_r() const { return keep_r_; }
     double rim() const { return rim_; }
 
 private:
     double K_;
     geo::Projection p_;
-    double cx_ = 0, cy_ = 0, rim_ = 0, scale_ = 1, clip_ = 0;
+    double cx_ = 0, cy_ = 0, rim_ = 0, scale_ = 1, clip_ = 0, keep_r_ = 0;
 };
 
 namespace detail {
@@ -131,7 +132,7 @@ struct Sample {
 };
 // The reference points of the edge p -> q, at most 0.2 px apart where the curve is within 2 px
 // of the limit circle or inside it (pieces wholly farther out halved ten times at most, to find
-// where they dip in). A drawn line that leaves the clip circle at a grazing angle ends within
+// where they dip in, unless their distance from O says they cannot). A drawn line that leaves the clip circle at a grazing angle ends within
 // the chord tolerance of the curve, but the curve itself may be outside the clip circle there.
 inline void edge_samples(double K, const ReferenceView& v, geo::Polar<double> p, geo::Polar<double> q,
                          std::vector<Sample>& out) {
@@ -165,8 +166,11 @@ inline void edge_samples(double K, const ReferenceView& v, geo::Polar<double> p,
         todo.pop_back();
         if (c.a.kept) out.push_back({c.a.x, c.a.y, c.a.from_centre});
         const bool any = c.a.kept || c.b.kept;
-        const bool far = !c.a.visible || !c.b.visible || std::hypot(c.a.x - c.b.x, c.a.y - c.b.y) > 0.2;
-        if ((any && far && c.depth < 40) || (!any && c.depth < 10)) {
+        const bool far = !c.a.visible || !c.b.visible || px_distance(c.a.x - c.b.x, c.a.y - c.b.y) > 0.2;
+        // A point of the piece is within half its length of an end, so no point of it is nearer
+        // O than this: farther than keep_r(), it has no kept point and is not halved.
+        const bool none_kept = std::min(c.a.r, c.b.r) - (c.t1 - c.t0) * d / 2 > v.keep_r() * (1 + 1e-12) + 1e-12;
+        if ((any && far && c.depth < 40) || (!any && !none_kept && c.depth < 10)) {
             const double tm = (c.t0 + c.t1) / 2;
             const ReferenceView::At m = at(tm);
             todo.push_back({tm, c.t1, m, c.b, c.depth + 1});
@@ -216,25 +220,38 @@ CurveCheck check_body(const W& world, std::size_t i, geo::Projection p, int widt
     }
     for (std::size_t e = 0; e < edges; ++e) detail::edge_samples(K, view, v[e], v[(e + 1) % nv], ref);
     out.pixels = static_cast<long>(lit.size()), out.samples = static_cast<long>(ref.size());
-    // The reference points by pixel (a canvas grown by 4 px on each side; points farther out
-    // are never within 3 px of a drawn pixel), as index ranges into `order`.
+    // The reference points by pixel, as index ranges into `order`: a grid over the box of the
+    // reference points grown by 4 px (a lit pixel outside it has no reference point within 3 px,
+    // the cells the search visits). The buffers are kept from call to call, so that a check is
+    // not mostly the kernel clearing fresh pages.
     constexpr long kPad = 4;
-    const long gw = width + 2 * kPad, gh = height + 2 * kPad;
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    for (std::size_t k = 0; k < ref.size(); ++k) {
+        const detail::Sample& r = ref[k];
+        if (k == 0) x0 = x1 = r.x, y0 = y1 = r.y;
+        x0 = std::min(x0, r.x), x1 = std::max(x1, r.x), y0 = std::min(y0, r.y), y1 = std::max(y1, r.y);
+    }
+    const long gx = std::max(-kPad, static_cast<long>(std::floor(x0)) - kPad);
+    const long gy = std::max(-kPad, static_cast<long>(std::floor(y0)) - kPad);
+    const long gw = std::max(0L, std::min<long>(width + kPad, static_cast<long>(std::floor(x1)) + kPad + 1) - gx);
+    const long gh = std::max(0L, std::min<long>(height + kPad, static_cast<long>(std::floor(y1)) + kPad + 1) - gy);
     auto cell = [&](double x, double y) -> long {
-        const long cx = static_cast<long>(std::floor(x)) + kPad, cy = static_cast<long>(std::floor(y)) + kPad;
+        const long cx = static_cast<long>(std::floor(x)) - gx, cy = static_cast<long>(std::floor(y)) - gy;
         return cx < 0 || cy < 0 || cx >= gw || cy >= gh ? -1 : cy * gw + cx;
     };
-    std::vector<uint32_t> first(static_cast<std::size_t>(gw * gh + 1), 0), order(ref.size());
+    thread_local std::vector<uint32_t> first, order, fill;
+    thread_local std::vector<uint8_t> on;
+    first.assign(static_cast<std::size_t>(gw * gh + 1), 0), order.assign(ref.size(), 0);
     for (const detail::Sample& r : ref)
         if (const long c = cell(r.x, r.y); c >= 0) ++first[static_cast<std::size_t>(c) + 1];
     for (std::size_t c = 1; c < first.size(); ++c) first[c] += first[c - 1];
-    {
-        std::vector<uint32_t> fill(first.begin(), first.end() - 1);
-        for (std::size_t k = 0; k < ref.size(); ++k)
-            if (const long c = cell(ref[k].x, ref[k].y); c >= 0) order[fill[static_cast<std::size_t>(c)]++] = static_cast<uint32_t>(k);
-    }
-    std::vector<uint8_t> on(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
-    for (const auto& [x, y] : lit) on[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)] = 1;
+    fill.assign(first.begin(), first.end() - 1);
+    for (std::size_t k = 0; k < ref.size(); ++k)
+        if (const long c = cell(ref[k].x, ref[k].y); c >= 0) order[fill[static_cast<std::size_t>(c)]++] = static_cast<uint32_t>(k);
+    // The drawn pixels on the same grid (the gap's search looks only within 3 px of a point).
+    on.assign(static_cast<std::size_t>(gw * gh), 0);
+    for (const auto& [x, y] : lit)
+        if (const long c = cell(x, y); c >= 0) on[static_cast<std::size_t>(c)] = 1;
     for (const auto& [x, y] : lit) {
         double best = 1e9;
         for (long dy = -3; dy <= 3; ++dy)
@@ -243,7 +260,7 @@ CurveCheck check_body(const W& world, std::size_t i, geo::Projection p, int widt
                 if (c < 0) continue;
                 for (uint32_t k = first[static_cast<std::size_t>(c)]; k < first[static_cast<std::size_t>(c) + 1]; ++k) {
                     const detail::Sample& r = ref[order[k]];
-                    best = std::min(best, std::hypot(r.x - (x + 0.5), r.y - (y + 0.5)));
+                    best = std::min(best, px_distance(r.x - (x + 0.5), r.y - (y + 0.5)));
                 }
             }
         if (best > out.worst)
@@ -257,8 +274,8 @@ CurveCheck check_body(const W& world, std::size_t i, geo::Projection p, int widt
             for (long dx = -3; dx <= 3; ++dx) {
                 const long x = px + dx, y = py + dy;
                 if (x < 0 || y < 0 || x >= width || y >= height) continue;
-                if (on[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)])
-                    best = std::min(best, std::hypot(s.x - (x + 0.5), s.y - (y + 0.5)));
+                if (const long c = cell(x, y); c >= 0 && on[static_cast<std::size_t>(c)])
+                    best = std::min(best, px_distance(s.x - (x + 0.5), s.y - (y + 0.5)));
             }
         if (best > out.gap)
             out.gap = best,
