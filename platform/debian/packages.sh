@@ -25,8 +25,9 @@ _np_group() {
         build) echo @core libpng-dev libgif-dev zlib1g-dev libx11-dev libxext-dev libgpiod-dev help2man ;;
         # The native test suite: GoogleTest, Google Benchmark, the Cairo reference, a virtual X
         # server driven by xdotool and read with xwininfo (x11-utils); shellcheck for the scripts;
-        # PROJ's proj (proj-bin) for the earth scene's check against its projections.
-        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ;;
+        # PROJ's proj (proj-bin) for the earth scene's check against its projections; ccache,
+        # with which run-tests compiles once what its trees compile alike.
+        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ccache ;;
         # The libFuzzer harnesses (the fuzz preset): clang 14 and libFuzzer's runtime.
         fuzz) echo @build clang-14 libclang-rt-14-dev ;;
         # The Raspberry Pi's architectures: a cross compiler with the target's libc, qemu-user

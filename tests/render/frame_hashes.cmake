@@ -1,9 +1,11 @@
 # The frame hashes (frame_hashes.cpp), checked:
 #   MODE=stable  two runs of CMD print the same lines, LINES of them, and nine in ten of the
 #                checked canvases differ from every other (a blank or frozen picture would not);
+#                the lines are left in the file OUT, when given (the native hashes a cross
+#                tree's frame_hashes_match_native compares with: platform/debian/run-tests);
 #   MODE=match   a run of CMD (the cross build's program under its emulator) prints exactly the
 #                file NATIVE (the native build's output), byte for byte.
-#   cmake -DMODE=stable|match -DCMD=<program;args> [-DLINES=<n>] [-DNATIVE=<file>] -P frame_hashes.cmake
+#   cmake -DMODE=stable|match -DCMD=<program;args> [-DLINES=<n>] [-DOUT=<file>] [-DNATIVE=<file>] -P frame_hashes.cmake
 cmake_minimum_required(VERSION 3.25)
 
 function(run_hashes out)
@@ -66,6 +68,9 @@ elseif(MODE STREQUAL "stable")
         message(FATAL_ERROR "only ${distinct} distinct canvases in ${LINES} checked frames:\n${first}")
     endif()
     message(STATUS "${n} frame lines, the same in two runs, ${distinct} distinct canvases")
+    if(OUT)
+        file(WRITE ${OUT} "${first}")
+    endif()
 else()
     message(FATAL_ERROR "MODE must be stable or match")
 endif()
