@@ -20,6 +20,7 @@
 # earth-curvature.png  the same, stereographic, at K = +1, 0 and -1 (400x400 each)
 # earth-zoom.png  zoom by curvature: the whole globe, 5000 km and 1500 km from Greenwich
 # earth-projections.png  the earth scene at K = +1 in the five projections, 320x320 each
+# earth-tissot.png  the same with Tissot's circles (--tissot) about 45 N 10 E
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -121,3 +122,10 @@ for p in equidistant stereographic gnomonic orthographic lambert; do
     panels+=("$tmp/ep$p.png")
 done
 python3 "$tmp/join.py" "${panels[@]}" docs/images/earth-projections.png
+# Tissot's indicatrices (--tissot) about 45 N 10 E in the five projections.
+panels=()
+for p in equidistant stereographic gnomonic orthographic lambert; do
+    "$nc" render --scene earth --tissot --centre 45,10 --frames 0 --aa --size 320x320 --projection "$p" --out "$tmp/et$p.png"
+    panels+=("$tmp/et$p.png")
+done
+python3 "$tmp/join.py" "${panels[@]}" docs/images/earth-tissot.png

@@ -155,6 +155,11 @@ const OptionRow kOptions[] = {
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
          o.params.view_km = a.number(opt, world::kEarthViewMinKm, world::kEarthViewMaxKm);
      }},
+    {"--tissot", "", kWorld, "the earth scene with Tissot's indicatrices: circles of 500 km on a 30-degree grid, each "
+     "drawn as the projection's ellipse there", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.params.tissot = true; }},
+    {"--no-tissot", "", kWorld, "the earth scene without them (the default)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.params.tissot = false; }},
     {"--aa", "", kPicture, "anti-aliased lines (default off; the kiosk: the board's)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.aa = true; }},
     {"--no-aa", "", kPicture, "aliased lines", nullptr, [](Args&, const std::string&, Options& o, Command) { o.aa = false; }},
@@ -307,7 +312,7 @@ void apply_settings(const Script& script, Options& o, Command c) {
         const std::string where = script.file + ":" + std::to_string(s.line) + ": ";
         try {
             std::vector<std::string> words;
-            if (s.key == "aa" || s.key == "hud") {  // flags: on or off
+            if (s.key == "aa" || s.key == "hud" || s.key == "tissot") {  // flags: on or off
                 words.push_back(std::string(parse_on_off(s.key, s.value) ? "--" : "--no-") + s.key);
             } else {
                 words = {"--" + s.key, s.value};

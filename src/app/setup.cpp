@@ -14,6 +14,8 @@
 namespace noneuclid::app {
 
 world::Scene load_scene(const Options& o) {
+    if (o.params.tissot && o.scene != "earth")
+        usage_error("--tissot draws Tissot's circles on the Earth: it needs --scene earth, not '" + o.scene + "'.");
     world::Scene scene;
     std::string over;
     if (!world::builtin_scene(o.scene, o.params, scene, &over)) {
@@ -58,6 +60,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
         std::snprintf(centre, sizeof centre, "%.17g,%.17g", o.params.centre_lat, o.params.centre_lon);
         rec.setting("centre", centre);
         if (o.params.view_km > 0) rec.setting("view", std::to_string(o.params.view_km));
+        if (o.params.tissot) rec.setting("tissot", "on");
     }
     if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
     rec.setting("engine", world::engine_name(o.engine));

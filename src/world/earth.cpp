@@ -186,7 +186,7 @@ private:
     bool broken_ = false, outside_ = false;
 };
 
-const Rgb kGraticule{55, 70, 95}, kCoast{130, 215, 150};
+const Rgb kGraticule{55, 70, 95}, kCoast{130, 215, 150}, kTissot{235, 165, 70};
 
 // Meridians every 15 degrees from pole to pole, parallels every 15 degrees from 75 S to 75 N,
 // a point every 3 degrees (the halving above adds more where K = -1 needs them).
@@ -216,6 +216,32 @@ void coastlines(Scene& s, const Placing& f) {
     }
 }
 
+// Tissot's circles: about each place of the grid, the points kTissotRadiusKm away at every
+// kTissotBearingDeg of bearing, joined as a closed ring (great-circle chords: each bulges
+// inward from the circle by at most a (1 - cos(step / 2)), 0.48 km).
+constexpr int kTissotBearingDeg = 5;
+void tissot(Scene& s, const Placing& f) {
+    Lines circles(s, f, "tissot", kTissot);
+    const double a = kTissotRadiusKm / kEarthRadiusKm;
+    auto circle = [&](double lat, double lon) {
+        const Frame c(lat, lon);
+        auto at = [&](int bearing) {
+            const double b = bearing * kDeg, h = std::sin(a);
+            return V3{std::cos(a) * c.up.x + h * (std::cos(b) * c.north.x + std::sin(b) * c.east.x),
+                      std::cos(a) * c.up.y + h * (std::cos(b) * c.north.y + std::sin(b) * c.east.y),
+                      std::cos(a) * c.up.z + h * (std::cos(b) * c.north.z + std::sin(b) * c.east.z)};
+        };
+        circles.start(at(0));
+        for (int b = kTissotBearingDeg; b < 360; b += kTissotBearingDeg) circles.to(at(b));
+        circles.to(at(0));
+        circles.end(true);
+    };
+    for (int lat = -90 + kTissotGridDeg; lat < 90; lat += kTissotGridDeg)
+        for (int lon = -180; lon < 180; lon += kTissotGridDeg) circle(lat, lon);
+    circle(90, 0);
+    circle(-90, 0);
+}
+
 }  // namespace
 
 EarthPolar earth_polar(double lat0, double lon0, double lat, double lon) {
@@ -241,7 +267,7 @@ double earth_view_curvature(double view_km) {
     return q * q;
 }
 
-void earth_scene(Scene& s, double lat0, double lon0, double view_km) {
+void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot_circles) {
     s.curvature = view_km > 0 ? earth_view_curvature(view_km) : 1;
     s.limit_radius = kPi;
     Placing f{Frame(lat0, lon0)};
@@ -252,6 +278,7 @@ void earth_scene(Scene& s, double lat0, double lon0, double view_km) {
     }
     graticule(s, f);
     coastlines(s, f);
+    if (tissot_circles) tissot(s, f);
 }
 
 }  // namespace noneuclid::world

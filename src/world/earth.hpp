@@ -35,11 +35,17 @@ inline constexpr double kEarthViewMinKm = 10, kEarthViewMaxKm = 3.14159265358979
 // K = (view_km / (pi kEarthRadiusKm))^2 (docs/earth.md).
 double earth_view_curvature(double view_km);
 
+// Tissot's indicatrices (--tissot): geodesic circles of this radius about the places of a grid
+// every kTissotGridDeg degrees (latitudes -60 to 60, longitudes -180 to 150, and the poles).
+// Drawn by a projection, each is an ellipse whose axes are that projection's scale factors there.
+inline constexpr double kTissotRadiusKm = 500;
+inline constexpr int kTissotGridDeg = 30;
+
 // The earth scene about the centre (lat0, lon0), limit radius pi, the graticule and the
 // coastlines as grid bodies (a backdrop: their edges are short, docs/earth.md). view_km 0: the
 // whole globe at K = +1, a place at its angle from the centre. Else zoomed: K from
 // earth_view_curvature, a place at its distance on that sphere (its angle / sqrt K), and only
-// the lines within the view (and just past its edge) kept.
-void earth_scene(Scene& s, double lat0, double lon0, double view_km = 0);
+// the lines within the view (and just past its edge) kept. tissot: Tissot's circles too.
+void earth_scene(Scene& s, double lat0, double lon0, double view_km = 0, bool tissot = false);
 
 }  // namespace noneuclid::world

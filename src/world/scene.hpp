@@ -130,6 +130,7 @@ struct SceneParams {
     int tessellation = 8;   // stress
     double centre_lat = 51.5, centre_lon = 0;  // earth: the place at O, degrees (default Greenwich; world/earth.hpp)
     double view_km = 0;  // earth: the view's radius, km (0: the whole globe at K = 1)
+    bool tissot = false;  // earth: Tissot's indicatrices, circles of 500 km on a 30-degree grid
 };
 
 // The built-in scenes (world/scenes.cpp's table): each one's name and what it shows, in one
