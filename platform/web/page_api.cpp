@@ -189,6 +189,9 @@ EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
 EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
     return g_run ? noneuclid::world::engine_name(g_run->options.engine) : "";
 }
+// 1 when the run's scene has the game (fire starts it and fires): the page shows the fire
+// button and mentions Space only then.
+EMSCRIPTEN_KEEPALIVE int nw_has_game() { return g_run && g_run->live.scene.game.on ? 1 : 0; }
 EMSCRIPTEN_KEEPALIVE int nw_width() { return g_run ? g_run->display->canvas().width() : 0; }
 EMSCRIPTEN_KEEPALIVE int nw_height() { return g_run ? g_run->display->canvas().height() : 0; }
 

@@ -97,11 +97,16 @@ export class Page {
 
   send(method, params = {}) { return this.browser.send(method, params, this.sessionId); }
 
-  async open(url) {
+  // Loads url; `viewport` ({width, height, dpr}), if given, is the screen of a phone or tablet
+  // (a mobile viewport of that many CSS pixels, at that device pixel ratio).
+  async open(url, viewport = null) {
     await this.send('Runtime.enable');
     await this.send('Log.enable');
     await this.send('Page.enable');
     await this.send('Emulation.setTouchEmulationEnabled', {enabled: true, maxTouchPoints: 5});
+    if (viewport)
+      await this.send('Emulation.setDeviceMetricsOverride', {width: viewport.width, height: viewport.height,
+                                                             deviceScaleFactor: viewport.dpr ?? 1, mobile: true});
     const loaded = new Promise((resolve) => this.browser.on((m) => {
       if (m.sessionId === this.sessionId && m.method === 'Page.loadEventFired') resolve();
     }));
@@ -126,6 +131,13 @@ export class Page {
 
   touch(type, x, y) {
     return this.send('Input.dispatchTouchEvent', {type, touchPoints: type === 'touchEnd' ? [] : [{x, y, id: 1}]});
+  }
+
+  // A left click of the mouse at (x, y), CSS pixels.
+  async click(x, y) {
+    await this.send('Input.dispatchMouseEvent', {type: 'mouseMoved', x, y});
+    await this.send('Input.dispatchMouseEvent', {type: 'mousePressed', x, y, button: 'left', clickCount: 1});
+    await this.send('Input.dispatchMouseEvent', {type: 'mouseReleased', x, y, button: 'left', clickCount: 1});
   }
 
   close() { return this.browser.send('Target.closeTarget', {targetId: this.targetId}); }

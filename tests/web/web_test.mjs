@@ -13,7 +13,8 @@
 //     measure scene, where taps on the picture mark the live triangle and the recording of the
 //     marks replays it;
 //  4. says one sentence for a bad option, a scene file it cannot load, a bad pasted one and a
-//     texture file (a page reads none).
+//     texture file (a page reads none);
+//  5. fits phones held either way and a desktop, and the rest of page_checks.mjs.
 // Every page that should work must also leave its console without an error.
 //   node web_test.mjs --noneuclid N --png-diff P --page DIR --work DIR [--chromium PATH]
 import {execFileSync} from 'node:child_process';
@@ -23,6 +24,7 @@ import {parseArgs} from 'node:util';
 import {fileURLToPath} from 'node:url';
 
 import {Browser} from './cdp.mjs';
+import {pageChecks} from './page_checks.mjs';
 import {serve} from './serve.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
@@ -78,11 +80,11 @@ const {server, port} = serve(root);
 const base = `http://127.0.0.1:${await port}/index.html`;
 const browser = new Browser(opt.chromium, path.join(work, 'profile'), ['--window-size=1000,1000']);
 const watchdog = setTimeout(() => {
-  console.log('not ok - the browser test did not finish within 300 s');
+  console.log('not ok - the browser test did not finish within 400 s');
   browser.process.kill('SIGKILL');
   server.kill();
   process.exit(1);
-}, 300000);
+}, 400000);
 
 // A page at index.html?QUERY, started: its Page, and whether its first run started.
 async function openPage(query) {
@@ -353,6 +355,9 @@ await check('a bad option, a missing scene file, a bad pasted scene and a textur
          `a pasted scene with a texture file: the message '${textured}' does not say the page reads no image files`);
   await page.close();
 });
+
+// ---- 5. the page itself: screens, the slider, bad addresses, the fire button ----------------------
+await pageChecks({browser, base, work, check, expect, sleep, waitFrames});
 
 clearTimeout(watchdog);
 await browser.close();

@@ -26,6 +26,9 @@
   const waiting = [];       // stop() and ended() callers, told when the run ends
   let control = {};         // control name -> number
   let kTarget = null, kHeld = -1;  // the K slider: the K it steers to, the control held for it
+  let linkDue = 0;          // when the address may next be rewritten (linkState)
+  let sliderDown = false;   // a pointer holds the K slider: it shows its own value, not K
+  const K_KEYS = ['hyperbolic', 'flat', 'spherical', 'preset', 'curvature_up', 'curvature_down', 'reset'];
 
   // ---- the engine's display: frames in, pixels out ------------------------------------------
   function present(pointer, width, height) {
@@ -107,7 +110,12 @@
     lastWords = words;
     canvas.width = mod._nw_width();
     canvas.height = mod._nw_height();
-    canvas.style.maxWidth = canvas.width + 'px';
+    fit();
+    // The fire button and the help's "Space fires" only where fire does something: the game.
+    const game = mod._nw_has_game() === 1;
+    const fire = document.querySelector('#touch button[data-control=fire]');
+    if (fire) fire.hidden = !game;
+    $('help-fire').hidden = !game;
     image = null;
     tickMs.length = 0;
     $('engine').value = mod.UTF8ToString(mod._nw_engine());
@@ -145,13 +153,33 @@
 
   function showState() {
     const K = mod._nw_curvature();
-    if (kTarget === null && document.activeElement !== $('curvature')) $('curvature').value = K;
+    if (kTarget === null && !sliderDown) $('curvature').value = K;
     $('k-value').textContent = K.toFixed(2);
     const projection = mod.UTF8ToString(mod._nw_projection());
     if (document.activeElement !== $('projection')) $('projection').value = projection;
     const ms = tickMs.reduce((a, b) => a + b, 0) / Math.max(tickMs.length, 1);
+    linkState(K, projection);
     $('status').textContent = `frame ${mod._nw_frame()} · K = ${K.toFixed(3)} · ${projection} · ` +
         `${mod.UTF8ToString(mod._nw_engine())} engine · ${ms.toFixed(2)} ms a frame`;
+  }
+
+  // The address says what is seen (scene, K, projection, engine), so that a copied link shows it:
+  // rewritten at most twice a second, and left alone while an actions file plays (the file says
+  // it) or for a scene pasted into the page (no address has it).
+  function linkState(K, projection) {
+    const now = performance.now();
+    if (now < linkDue || lastWords.includes('--actions')) return;
+    linkDue = now + 500;
+    const scene = lastScene();
+    if (!builtins.includes(scene) && scene !== params.get('scene')) return;
+    const link = new URLSearchParams(location.search);
+    for (const drop of ['actions', 'frames']) link.delete(drop);
+    link.set('scene', scene);
+    link.set('curvature', String(Math.round(K * 1000) / 1000));
+    link.set('projection', projection);
+    link.set('engine', mod.UTF8ToString(mod._nw_engine()));
+    const query = '?' + link.toString();
+    if (query !== location.search) history.replaceState(null, '', query);
   }
 
   // ---- input ----------------------------------------------------------------------------------
@@ -175,6 +203,7 @@
       e.preventDefault();
       if (keysHeld.has(e.key)) return;  // the keyboard's auto-repeat
       keysHeld.set(e.key, c);
+      if (kTarget !== null && K_KEYS.some((name) => control[name] === c)) stopSteering();  // the key wins
       input(c, true);
     } else {
       // Released under another name (Shift let go before "+"): the control it was pressed as.
@@ -220,6 +249,30 @@
     }
   }
 
+  function stopSteering() {
+    if (kHeld >= 0) input(kHeld, false);
+    kTarget = null, kHeld = -1;
+  }
+
+  // The canvas, as large as #stage allows with the run's aspect (CSS pixels; the canvas keeps
+  // the run's own pixels).
+  function fit() {
+    const stage = $('stage');
+    const scale = Math.min(stage.clientWidth / canvas.width, stage.clientHeight / canvas.height);
+    if (!(scale > 0)) return;
+    canvas.style.width = Math.floor(canvas.width * scale) + 'px';
+    canvas.style.height = Math.floor(canvas.height * scale) + 'px';
+  }
+  // The run's size when the address gives none: the world's 5:3 at most 800x480, small enough
+  // that a canvas pixel covers at least 9/8 CSS pixels, so that the HUD's 8-pixel text is at
+  // least 9 CSS pixels tall on a phone.
+  function defaultSize() {
+    const stage = $('stage');
+    const fits = Math.min(stage.clientWidth, stage.clientHeight * 5 / 3) * 8 / 9;
+    const width = Math.max(240, Math.min(800, Math.floor(fits / 10) * 10));
+    return `${width}x${width * 3 / 5}`;
+  }
+
   // The K slider steers K to its value by holding curvature up or down, as a visitor holding the
   // button would: the recording replays it.
   function steerCurvature() {
@@ -239,6 +292,7 @@
   function wireControls() {
     window.addEventListener('keydown', (e) => onKey(e, true));
     window.addEventListener('keyup', (e) => onKey(e, false));
+    new ResizeObserver(fit).observe($('stage'));
     window.addEventListener('blur', () => {
       for (const c of keysHeld.values()) input(c, false);
       keysHeld.clear();
@@ -252,6 +306,9 @@
       for (let i = 0; i < taps; ++i) input(control.projection, true), input(control.projection, false);
       canvas.focus();
     });
+    $('curvature').addEventListener('pointerdown', () => { sliderDown = true; });
+    for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'])
+      $('curvature').addEventListener(type, () => { sliderDown = false; });
     $('curvature').addEventListener('input', (e) => {
       if (kHeld >= 0) input(kHeld, false);
       kHeld = -1;
@@ -318,18 +375,24 @@
   }).then(async (m) => {
     mod = m;
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
-    for (const [name] of TOUCH.concat([['projection'], ['curvature_up'], ['curvature_down']]))
+    for (const name of new Set(TOUCH.map(([name]) => name).concat(['projection'], K_KEYS)))
       control[name] = call('nw_control', 'number', [name]);
     touchButtons();
     wireControls();
     try {
       startWords = await wordsOfUrl();
+      if (!params.has('size') && !params.has('actions')) startWords.push('--size', defaultSize());
     } catch (e) {
       say(e.message);
+      $('status').textContent = 'not running';
+      startWords = ['--size', defaultSize()];  // said once: the menus start runs without the address
       readyResolve(false);
       return;
     }
-    readyResolve(start(startWords));
+    const started = start(startWords);
+    // A bad address is said once: the menus then start runs without its words.
+    if (!started) startWords = ['--size', defaultSize()];
+    readyResolve(started);
     canvas.focus();
   });
 })();

@@ -1,0 +1,152 @@
+// The page's own behaviour in the browser (docs/web.md, "The test"): it fits phones held either
+// way and a desktop without scrolling, its HUD text is readable on a phone, a key wins over the
+// K slider, a bad address is said once, an unknown scene is named, and the fire button and help
+// match the scene. Run by web_test.mjs, whose browser, server and helpers it is given.
+import fs from 'node:fs';
+import path from 'node:path';
+
+const VIEWPORTS = [{width: 844, height: 390, dpr: 3}, {width: 390, height: 844, dpr: 3}, {width: 1280, height: 800, dpr: 1}];
+
+export async function pageChecks({browser, base, work, check, expect, sleep, waitFrames}) {
+  const open = async (query, viewport = null) => {
+    const page = await browser.newPage();
+    await page.open(`${base}?${query}`, viewport);
+    return {page, started: await page.evaluate('window.noneuclid.ready')};
+  };
+  const state = (page) => page.evaluate('window.noneuclid.state()');
+
+  for (const v of VIEWPORTS) {
+    await check(`${v.width}x${v.height}: the canvas and every touch button lie in the viewport, the page does not scroll`, async () => {
+      const {page, started} = await open('scene=asteroids', v);
+      expect(started === true, 'the page did not start');
+      await waitFrames(page, 3);
+      await sleep(200);  // the ResizeObserver's fit
+      const m = await page.evaluate(`(() => {
+        const box = (e) => { const r = e.getBoundingClientRect(); return {x: r.x, y: r.y, right: r.right, bottom: r.bottom, w: r.width, h: r.height}; };
+        const c = document.getElementById('screen');
+        return {vw: innerWidth, vh: innerHeight, canvas: box(c), pixels: [c.width, c.height],
+                sw: document.documentElement.scrollWidth, sh: document.documentElement.scrollHeight,
+                buttons: [...document.querySelectorAll('#touch button')].map((b) => ({name: b.dataset.control, ...box(b)}))};
+      })()`);
+      const shot = await page.send('Page.captureScreenshot', {format: 'png'});
+      fs.writeFileSync(path.join(work, `fit-${v.width}x${v.height}.png`), Buffer.from(shot.data, 'base64'));
+      const inside = (r) => r.x >= 0 && r.y >= 0 && r.right <= m.vw + 0.5 && r.bottom <= m.vh + 0.5 && r.w > 0 && r.h > 0;
+      expect(m.vw === v.width && m.vh === v.height, `the viewport is ${m.vw}x${m.vh}, not ${v.width}x${v.height}`);
+      expect(inside(m.canvas), `the canvas ${JSON.stringify(m.canvas)} is not inside the viewport`);
+      expect(m.buttons.length === 7, `${m.buttons.length} touch buttons, not the game's 7`);
+      for (const b of m.buttons) expect(inside(b), `the touch button ${b.name} ${JSON.stringify(b)} is not inside the viewport`);
+      expect(m.sw <= m.vw && m.sh <= m.vh, `the page is ${m.sw}x${m.sh} CSS px: it scrolls in a ${m.vw}x${m.vh} viewport`);
+      // The world's aspect kept within a CSS pixel, and the space used: the canvas spans at least
+      // 60% of the viewport's width or 80% of its height (what the buttons and controls leave).
+      const aspect = m.pixels[0] / m.pixels[1];
+      expect(Math.abs(m.canvas.w / aspect - m.canvas.h) <= 1, `the canvas ${m.canvas.w}x${m.canvas.h} CSS px lost the world's aspect ${aspect}`);
+      expect(m.canvas.w >= 0.6 * m.vw || m.canvas.h >= 0.8 * m.vh, `the canvas ${m.canvas.w}x${m.canvas.h} leaves the viewport's space unused`);
+      expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+      await page.close();
+    });
+  }
+
+  await check('390x844: the HUD text is at least 9 CSS px tall', async () => {
+    const {page, started} = await open('scene=kiosk', VIEWPORTS[1]);
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    await sleep(200);
+    // The page's HUD font is the built-in one (it reads no console fonts), 8 canvas pixels a
+    // line (src/render/font.cpp); a canvas pixel is the canvas's CSS height over its pixels.
+    const m = await page.evaluate(`(() => {
+      const c = document.getElementById('screen');
+      return {css: c.getBoundingClientRect().height, pixels: c.height};
+    })()`);
+    const text = 8 * m.css / m.pixels;
+    expect(text >= 9, `the HUD text is ${text.toFixed(2)} CSS px tall (canvas ${m.pixels} px shown ${m.css} CSS px tall)`);
+    await page.close();
+  });
+
+  await check('a click on the K slider, then 3: K stays at +1 (the key wins)', async () => {
+    const {page, started} = await open('scene=kiosk&size=400x300');
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    const r = await page.evaluate(`(() => { const r = document.getElementById('curvature').getBoundingClientRect();
+                                           return {x: r.x + 0.1 * r.width, y: r.y + r.height / 2}; })()`);
+    await page.click(r.x, r.y);  // about K = -0.8: the slider holds curvature down
+    await waitFrames(page, 3);
+    const before = (await state(page)).K;
+    expect(before < -0.01, `the click on the slider did not start bending K down (K = ${before})`);
+    await page.key('keyDown', '3', 'Digit3', 51);
+    await waitFrames(page, 2);
+    await page.key('keyUp', '3', 'Digit3', 51);
+    await sleep(3000);
+    // One frame of the slider's pull moves K by 0.5/60 (the curvature rate): half that fails it.
+    const K = (await state(page)).K;
+    expect(Math.abs(K - 1) < 0.004, `K is ${K} 3 s after 3, not +1`);
+    const shown = Number(await page.evaluate("document.getElementById('curvature').value"));
+    expect(Math.abs(shown - 1) < 0.01, `the slider shows ${shown}, not K = +1`);
+    await page.close();
+  });
+
+  await check('?curvature=7 is said once: a scene chosen from the menu then runs', async () => {
+    const {page, started} = await open('curvature=7');
+    expect(started === false, '?curvature=7: the page started');
+    expect((await state(page)).message.includes('--curvature'), 'no sentence about --curvature');
+    await page.evaluate(`(() => { const s = document.getElementById('scene'); s.value = 'asteroids';
+                                  s.dispatchEvent(new Event('change')); })()`);
+    await waitFrames(page, 5);
+    const s = await state(page);
+    expect(s.running && s.message === '', `the scene from the menu did not run: '${s.message}'`);
+    await page.close();
+  });
+
+  await check('?scene=nosuch: one sentence that names the scene and the built-in ones; no "loading"', async () => {
+    const {page, started} = await open('scene=nosuch');
+    expect(started === false, '?scene=nosuch: the page started');
+    const message = (await state(page)).message;
+    const builtins = await page.evaluate("[...document.getElementById('scene').options].map((o) => o.value)");
+    expect(message.includes("'nosuch'") && builtins.length > 0 && builtins.every((b) => message.includes(b)),
+           `the message '${message}' does not name the scene and the built-in ones (${builtins})`);
+    expect((message.match(/\.( |$)/g) || []).length === 1, `the message '${message}' is not one sentence`);
+    const status = await page.evaluate("document.getElementById('status').textContent");
+    expect(!status.includes('loading'), `the status still says '${status}'`);
+    await page.close();
+  });
+
+  await check('the address follows the scene, K and projection; a copied link opens on them', async () => {
+    const {page, started} = await open('scene=kiosk&size=400x300');
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    for (const [key, code, keyCode] of [['1', 'Digit1', 49], ['p', 'KeyP', 80]]) {
+      await page.key('keyDown', key, code, keyCode);
+      await waitFrames(page, 2);
+      await page.key('keyUp', key, code, keyCode);
+      await waitFrames(page, 2);
+    }
+    await sleep(1200);  // the address is rewritten at most twice a second
+    const seen = await page.evaluate(`({K: window.noneuclid.state().K, projection: document.getElementById('projection').value,
+                                        link: location.href})`);
+    expect(Math.abs(seen.K + 1) < 1e-6 && seen.projection !== 'equidistant', `1 and P gave K = ${seen.K}, ${seen.projection}`);
+    await page.close();
+    const copy = await browser.newPage();
+    await copy.open(seen.link);
+    expect(await copy.evaluate('window.noneuclid.ready') === true, `the link ${seen.link} did not start`);
+    await waitFrames(copy, 2);
+    const got = await copy.evaluate(`({K: window.noneuclid.state().K, projection: document.getElementById('projection').value,
+                                       scene: document.getElementById('scene').value})`);
+    // K as the address writes it: to 1e-3.
+    expect(Math.abs(got.K - seen.K) <= 1e-3 && got.projection === seen.projection && got.scene === 'kiosk',
+           `the link ${seen.link} opened on ${JSON.stringify(got)}, not ${JSON.stringify(seen)}`);
+    await copy.close();
+  });
+
+  await check('the fire button and the help\'s "Space fires" show only in a scene with the game', async () => {
+    for (const [query, game] of [['', false], ['scene=kiosk', false], ['scene=asteroids', true]]) {
+      const {page, started} = await open(query);
+      expect(started === true, `?${query}: the page did not start`);
+      const m = await page.evaluate(`(() => {
+        const b = document.querySelector('#touch button[data-control=fire]');
+        return {button: !!b && b.getClientRects().length > 0, help: document.querySelector('.help').innerText};
+      })()`);
+      expect(m.button === game, `?${query}: the fire button is ${m.button ? 'shown' : 'hidden'}`);
+      expect(m.help.includes('Space fires') === game, `?${query}: the help says '${m.help}'`);
+      await page.close();
+    }
+  });
+}
