@@ -34,7 +34,7 @@ const rows = [];
 try {
   for (const scene of ['kiosk', 'stress']) {
     const page = await browser.newPage();
-    await page.open(`${base}?scene=${scene}`);
+    await page.open(`${base}?scene=${scene}&size=800x480`);  // the page would fit its size to the window
     if (!await page.evaluate('window.noneuclid.ready')) throw new Error(`the page did not start on ${scene}`);
     // The page and the native program take turns, so that a change in the host's load between
     // them reaches both.
