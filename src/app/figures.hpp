@@ -25,6 +25,7 @@ struct Figure {
     const char* label = nullptr;  // the panel's label instead of "K = ..."
     geo::Projection projection = geo::Projection::azimuthal_equidistant;
     double centre_lat = 51.5, centre_lon = 0;  // the earth scene's centre (world/earth.hpp)
+    bool no_ship = false;     // without the scene's ship (figure 3: the paper's map has none)
 };
 
 extern const Figure kFigures[];

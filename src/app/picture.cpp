@@ -81,7 +81,9 @@ PictureResult render_figure(const Figure& f, const Options& base, const render::
         o.projection = f.projection, o.params.centre_lat = f.centre_lat, o.params.centre_lon = f.centre_lon;
         if (!f.own_K) o.has_curvature = true, o.curvature = f.K[i];
         Picture panel;
-        last = render_picture(o, load_scene(o), nullptr, font, panel);
+        world::Scene scene = load_scene(o);
+        if (f.no_ship) std::erase_if(scene.bodies, [](const world::SceneBody& b) { return b.controlled; });
+        last = render_picture(o, scene, nullptr, font, panel);
         if (last.stopped) return last;
         char label[64];
         figure_label(f, i, label, sizeof label);

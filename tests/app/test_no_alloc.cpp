@@ -209,4 +209,10 @@ TEST(NoAllocation, TheGameAllocatesNothingPerFrame) {
     EXPECT_EQ(loop_allocations(world::engine_named("double"), 2, "asteroids"), 0);
 }
 
+// The ship flown over the Earth (the earth scene's, by the same keys) in the frame loop.
+TEST(NoAllocation, TheShipOverTheEarthAllocatesNothingPerFrame) {
+    EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1, "earth"), 0);
+    EXPECT_EQ(loop_allocations(world::engine_named("double"), 2, "earth"), 0);
+}
+
 }  // namespace

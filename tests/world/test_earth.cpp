@@ -85,8 +85,13 @@ TEST(Earth, TheSceneHoldsEveryCoastPointWithinTheBudgetAndRanges) {
         std::string why;
         EXPECT_TRUE(world::within_budget(s, why)) << why;
         EXPECT_TRUE(world::within_ranges(s, why)) << why;
-        long coast = 0, longest = 0;
+        long coast = 0, longest = 0, ships = 0;
         for (const world::SceneBody& b : s.bodies) {
+            if (b.controlled) {  // the ship, at O, to fly over the Earth
+                EXPECT_TRUE(!b.grid && b.r == 0 && b.speed == 0) << b.name;
+                ++ships;
+                continue;
+            }
             EXPECT_TRUE(b.grid && b.r == 0 && b.facing_deg == 0 && b.speed == 0) << b.name;
             if (b.name.rfind("coast", 0) == 0) coast += static_cast<long>(b.vertices.size());
             for (std::size_t i = 0; i + 1 < b.vertices.size(); ++i) {
@@ -97,6 +102,7 @@ TEST(Earth, TheSceneHoldsEveryCoastPointWithinTheBudgetAndRanges) {
                 longest = std::max(longest, static_cast<long>(b.vertices.size()));
             }
         }
+        EXPECT_EQ(ships, 1);
         // Every point of the data, and the halving's points between them.
         EXPECT_GE(coast, static_cast<long>(std::size(world::earth_data::kPoints))) << lat << "," << lon;
         EXPECT_LE(longest, world::Budget::kVerticesPerBody);
