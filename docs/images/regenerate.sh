@@ -21,6 +21,8 @@
 # earth-zoom.png  zoom by curvature: the whole globe, 5000 km and 1500 km from Greenwich
 # earth-projections.png  the earth scene at K = +1 in the five projections, 320x320 each
 # earth-tissot.png  the same with Tissot's circles (--tissot) about 45 N 10 E
+# game-earth.png  attract mode playing the game over the Earth (tests/files/data/earth_game.toml)
+#                for 10 s, 800x480 (docs/game.md)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -129,3 +131,5 @@ for p in equidistant stereographic gnomonic orthographic lambert; do
     panels+=("$tmp/et$p.png")
 done
 python3 "$tmp/join.py" "${panels[@]}" docs/images/earth-tissot.png
+"$nc" run --display png --scene tests/files/data/earth_game.toml --attract 0.5 --frames 600 --aa --scores none \
+    --size 800x480 --screenshot docs/images/game-earth.png

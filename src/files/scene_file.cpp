@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "world/budget.hpp"
+#include "world/earth.hpp"
 #include "world/game.hpp"
 #include "world/instruments.hpp"
 #include "world/world.hpp"
@@ -281,10 +282,33 @@ void read_measure(const toml::table& t, int index, world::Scene& scene) {
     scene.measures.push_back(d);
 }
 
+// backdrop = "earth" (with centre = [lat, lon], default Greenwich): the Earth's graticule and
+// coastlines about that place (world/earth.hpp, the whole globe) in place of a [[grid]]: grid
+// bodies, so that the game's collisions and the controls pass them by.
+void read_backdrop(const Reader& r, const toml::table& root, world::Scene& s) {
+    const toml::node* backdrop = root.get("backdrop");
+    const toml::node* centre = root.get("centre");
+    if (!backdrop) {
+        if (centre) throw Bad{centre->source(), "'centre' places the Earth's backdrop: add backdrop = \"earth\", or remove it"};
+        return;
+    }
+    const std::string kind = r.string("backdrop", "");
+    if (kind != "earth")
+        throw Bad{backdrop->source(), "expected backdrop = \"earth\" (the only backdrop), found \"" + world::printable(kind) + "\""};
+    if (const toml::node* grid = root.get("grid"))
+        throw Bad{grid->source(), "backdrop = \"earth\" is the scene's grid: remove the [[grid]] tables, or the backdrop"};
+    double lat = 51.5, lon = 0;
+    if (r.pair("centre", lat, lon, -90, 90, "latitude, longitude in degrees") && !(lon >= -180 && lon <= 180))
+        throw Bad{centre->source(), "'centre' must be [latitude, longitude] with the longitude from -180 to 180 degrees"};
+    world::Scene earth;
+    world::earth_scene(earth, lat, lon);
+    for (world::SceneBody& b : earth.bodies) s.bodies.push_back(std::move(b));
+}
+
 void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
-            "game", "measure"});
+            "game", "measure", "backdrop", "centre"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
     s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, world::Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
@@ -297,6 +321,7 @@ void read_scene(const toml::table& root, world::Scene& s, Images& images) {
         s.presets.clear();
         for (const toml::node& e : *a) s.presets.push_back(r.as_number(e, "presets", -1, 1, "K"));
     }
+    read_backdrop(r, root, s);
     if (const toml::array* grids = tables(root, "grid"))
         for (const toml::node& g : *grids) read_grid(*g.as_table(), s);
     if (const toml::array* bodies = tables(root, "body")) {

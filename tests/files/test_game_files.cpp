@@ -1,5 +1,6 @@
 // The game's settings in a scene file (its [game] table read, its slots made, every bad value
-// with its place) and the game in the dump (kinds, sizes, phase, score, lives, level, events).
+// with its place), the game over the Earth (backdrop = "earth") and the game in the dump (kinds,
+// sizes, phase, score, lives, level, events).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -7,6 +8,7 @@
 #include "../world/game_world.hpp"
 #include "files/dump.hpp"
 #include "files/scene_file.hpp"
+#include "world/earth.hpp"
 #include "world/world.hpp"
 
 using namespace noneuclid::world;
@@ -74,6 +76,53 @@ levels = [-1, 1]
         EXPECT_NE(err.message.find(b.says), std::string::npos) << err.to_string();
         EXPECT_GT(err.line, 0);
     }
+}
+
+// backdrop = "earth": the Earth's lines (the earth scene's, built here on their own) are the
+// scene's grid, and the game over them is the same game as without them, step for step: the
+// asteroids are where they would be with no backdrop (the coastlines and graticule hit nothing).
+TEST(Game, PlaysOverTheEarth) {
+    const std::string path = std::string(NONEUCLID_SOURCE_DIR) + "/tests/files/data/earth_game.toml";
+    Scene over, plain, earth;
+    SceneError e;
+    ASSERT_TRUE(load_scene_file(path, over, e)) << e.to_string();
+    world::earth_scene(earth, 45, 10);
+    ASSERT_GT(earth.bodies.size(), 100u);
+    std::size_t grid = 0;
+    for (const SceneBody& b : over.bodies) grid += b.grid;
+    EXPECT_EQ(grid, earth.bodies.size());
+    for (std::size_t i = 0; i < earth.bodies.size(); ++i) {  // the same lines, in the same places
+        ASSERT_EQ(over.bodies[i].name, earth.bodies[i].name);
+        ASSERT_EQ(over.bodies[i].vertices.size(), earth.bodies[i].vertices.size()) << i;
+        EXPECT_EQ(over.bodies[i].vertices.back().rho, earth.bodies[i].vertices.back().rho) << i;
+    }
+    ASSERT_TRUE(parse_scene("curvature = 0\n[[body]]\nname = \"ship\"\n"
+                            "vertices = [[0.12, 0.0], [0.08, 140.0], [0.08, 220.0]]\n[game]\n",
+                            "plain.toml", plain, e))
+        << e.to_string();
+    World<double> a(over), b(plain);
+    a.press(Action::fire), b.press(Action::fire);
+    int moved = 0;
+    for (int step = 0; step < 1200; ++step) {  // 20 s: the asteroids drift across many lines
+        a.step(1.0 / 60), b.step(1.0 / 60);
+        if (step == 0) a.release(Action::fire), b.release(Action::fire);
+    }
+    EXPECT_EQ(count(a, BodyKind::grid), static_cast<int>(earth.bodies.size()));
+    EXPECT_EQ(count(a, BodyKind::asteroid), count(b, BodyKind::asteroid));
+    EXPECT_EQ(a.game().lives, b.game().lives);
+    std::vector<const Body<double>*> ra, rb;
+    for (const auto& x : a.bodies)
+        if (x.active && x.desc->kind() == BodyKind::asteroid) ra.push_back(&x);
+    for (const auto& x : b.bodies)
+        if (x.active && x.desc->kind() == BodyKind::asteroid) rb.push_back(&x);
+    ASSERT_EQ(ra.size(), rb.size());
+    ASSERT_GE(ra.size(), 4u);
+    for (std::size_t i = 0; i < ra.size(); ++i) {
+        EXPECT_NEAR(ra[i]->centre.r, rb[i]->centre.r, 1e-12) << i;
+        EXPECT_NEAR(ra[i]->centre.theta, rb[i]->centre.theta, 1e-12) << i;
+        moved += ra[i]->centre.r > 0.3;
+    }
+    EXPECT_GT(moved, 0);
 }
 
 // The dump names kinds and sizes, and reports the events of the step that led to each frame.

@@ -82,6 +82,12 @@ TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
         {"[[body]]\nname = 7\nvertices = [[0.1, 0]]\n", 2, 8, "expected a string for 'name', found an integer"},
         {"[[grid]]\nkind = \"hex\"\n", 2, 8, "grid: expected kind = \"axes\" or \"radial\", found \"hex\""},
         {"[[grid]]\nspacing = 0\n", 2, 11, "'spacing' must be from"},
+        {"backdrop = \"moon\"\n", 1, 12, "expected backdrop = \"earth\" (the only backdrop), found \"moon\""},
+        {"centre = [0, 0]\n", 1, 10, "'centre' places the Earth's backdrop: add backdrop = \"earth\""},
+        {"backdrop = \"earth\"\ncentre = [100, 0]\n", 2, 11, "'centre' must be from -90 to 90"},
+        {"backdrop = \"earth\"\ncentre = [0, 200]\n", 2, 10, "with the longitude from -180 to 180"},
+        {"backdrop = \"earth\"\ncentre = 5\n", 2, 10, "expected 'centre' = [latitude, longitude in degrees]"},
+        {"backdrop = \"earth\"\n[[grid]]\nkind = \"axes\"\n", 2, 1, "remove the [[grid]] tables, or the backdrop"},
     };
     for (const BadCase& c : cases) {
         Scene s;
