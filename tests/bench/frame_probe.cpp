@@ -6,7 +6,7 @@
 // lines from points computed once), copy (render::copy_canvas), memcpy (the same bytes), fill
 // (the filled and textured bodies' fills alone), fillmemset (a memset of as many pixels as the
 // fills cover).
-// ENGINE fixed|double|float, SCENE kiosk|stress|textured|... (NAME+instruments: with four instruments measured in it; filled: textured with colours for
+// ENGINE fixed|double|float, SCENE kiosk|stress|textured|... (NAME+instruments: with four instruments measured in it; earth:KM: the earth zoomed to KM km; filled: textured with colours for
 // textures) or game:A:B (the asteroids scene in play
 // with A asteroids and B bullets in flight; stage collide: the game's collision tests alone,
 // the broad and narrow phases as world/game.hpp runs them), FORMAT rgb565|xrgb8888|rgb888; K sets the
@@ -101,6 +101,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     // "NAME+instruments": the scene with a triangle, a circle, the parallels and a ring of seven
     // triangles measured in it (world/instruments.hpp): the instruments' cost is the difference.
     std::string name = filled ? "textured" : scene_name;
+    // "earth:KM": the earth scene zoomed to KM kilometres (--view).
+    if (name.rfind("earth:", 0) == 0) params.view_km = std::atof(name.c_str() + 6), name = "earth";
     const std::size_t plus = name.find("+instruments");
     const bool instruments = plus != std::string::npos;
     if (instruments) name.resize(plus);
