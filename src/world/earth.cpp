@@ -58,12 +58,19 @@ struct Frame {
 
 // A polyline's edges are geodesics of whatever K the world has, between points that keep their
 // distance and bearing. So that the drawn line stays on the Earth's line at every K, an edge is
-// halved (at its great circle's midpoint) until it is at most kStep long at K = -1, where the
-// same two polar points are farthest apart. Within a few degrees of the antipode, where a short
-// arc spans a wide range of bearings, halving kMaxDepth times is not enough and the line breaks:
-// that is the limit circle at K = +1.
-constexpr double kStep = 0.1;
-constexpr int kMaxDepth = 8;
+// halved (at its great circle's midpoint) while, at K = -1, where the same two polar points are
+// farthest apart and the geodesic bends most from the mapped great circle, the geodesic's
+// midpoint lies more than kBendPx pixels of the kiosk's disc from the great circle's in any of
+// the five projections (docs/earth.md), or the edge is longer than kMaxStep there (kCullStep
+// where it leaves the view, zoomed: no vertex lies more than kCullMargin + kCullStep outside
+// it). Within a few degrees of the antipode, where a short arc spans a wide range of bearings,
+// halving down to kMinArc (radians of the Earth, divided by the zoom's scale) is not enough
+// and the line breaks: that is the limit circle at K = +1.
+constexpr double kBendPx = 1, kMaxStep = 0.5, kCullStep = 0.1, kMinArc = 3 * kDeg / 256;
+// The coastlines are simplified when the scene is built (Douglas-Peucker on the sphere): every
+// point left out lies within kSimplifyPx of the kept line, in pixels of the kiosk's disc
+// (kDiscPx: 800x480, the disc pi world units across its radius).
+constexpr double kSimplifyPx = 0.25, kDiscPx = 240;
 // A body's vertices at most (Budget::kVerticesPerBody is far above it): a longer line goes on
 // in a new body from the same point.
 constexpr std::size_t kPieceVertices = 4000;
@@ -71,10 +78,42 @@ constexpr std::size_t kPieceVertices = 4000;
 // kCullMargin outside the limit circle, and an edge whose every point lies farther (both ends
 // farther than half its length) is not halved at all.
 constexpr double kCullMargin = 0.25;
+// A polar point on the hyperboloid of K = -1 (x0 = cosh r), and the Minkowski product.
+struct H3 {
+    double t, x, y;
+};
+H3 hyperboloid(SceneBody::Vertex v) {
+    const double s = std::sinh(v.rho), a = v.phi_deg * kDeg;
+    return {std::cosh(v.rho), s * std::cos(a), s * std::sin(a)};
+}
+double minkowski(H3 a, H3 b) { return a.t * b.t - a.x * b.x - a.y * b.y; }
 
+// At K = -1: the length of the geodesic from a to b.
 double hyperbolic_length(SceneBody::Vertex a, SceneBody::Vertex b) {
-    const double dr = std::sinh((a.rho - b.rho) / 2), s = std::sin((a.phi_deg - b.phi_deg) * kDeg / 2);
-    return 2 * std::asinh(std::sqrt(dr * dr + std::sinh(a.rho) * std::sinh(b.rho) * s * s));
+    return std::acosh(std::fmax(minkowski(hyperboloid(a), hyperboloid(b)), 1.0));
+}
+
+// At K = -1, the pixels of the kiosk's disc between the geodesic midpoint of a and b and the
+// point m, in the view that draws them farthest apart: the five projections' screen radius
+// there (geometry/projection.hpp at K = -1), scaled to put the limit circle at kDiscPx.
+double midpoint_bend_px(SceneBody::Vertex a, SceneBody::Vertex b, SceneBody::Vertex m) {
+    const H3 p = hyperboloid(a), q = hyperboloid(b), s{p.t + q.t, p.x + q.x, p.y + q.y};
+    const double n = std::sqrt(minkowski(s, s));
+    const double gr = std::acosh(std::fmax(s.t / n, 1.0)), ga = std::atan2(s.y, s.x), ma = m.phi_deg * kDeg;
+    using View = double (*)(double);
+    static constexpr View kViews[] = {
+        [](double r) { return r; },                       // equidistant
+        [](double r) { return 2 * std::tanh(r / 2); },    // stereographic
+        [](double r) { return std::tanh(r); },            // gnomonic
+        [](double r) { return std::sinh(r); },            // orthographic
+        [](double r) { return 2 * std::sinh(r / 2); },    // Lambert
+    };
+    double worst = 0;
+    for (View f : kViews) {
+        const double k = kDiscPx / f(kPi), g = f(gr) * k, h = f(m.rho) * k;
+        worst = std::fmax(worst, std::hypot(g * std::cos(ga) - h * std::cos(ma), g * std::sin(ga) - h * std::sin(ma)));
+    }
+    return worst;
 }
 
 // The places' polar coordinates in the world: the centre's frame, and the world units a radian
@@ -82,7 +121,8 @@ double hyperbolic_length(SceneBody::Vertex a, SceneBody::Vertex b) {
 struct Placing {
     Frame frame;
     double scale = 1, cull = 1e300;
-    int depth = kMaxDepth;
+    double tolerance = kSimplifyPx * kPi / kDiscPx;  // the coastlines' simplification, radians of the Earth
+    double min_arc = kMinArc;
     SceneBody::Vertex polar(V3 v) const {
         SceneBody::Vertex p = frame.polar(v);
         p.rho *= scale;
@@ -106,7 +146,7 @@ public:
     }
     // The line on to p along the great circle.
     void to(V3 p) {
-        edge(last_, p, 0);
+        edge(last_, p);
         last_ = p;
     }
     // Ends the line; closed: it was a ring, drawn whole (its last edge back to its start).
@@ -120,7 +160,7 @@ public:
     }
 
 private:
-    void edge(V3 a, V3 b, int depth) {
+    void edge(V3 a, V3 b) {
         const SceneBody::Vertex pa = frame_.polar(a), pb = frame_.polar(b);
         if (std::fmin(pa.rho, pb.rho) - arc(a, b) * frame_.scale / 2 > frame_.cull) {
             flush();
@@ -128,18 +168,19 @@ private:
             outside_ = true, outside_at_ = pb;
             return;
         }
-        if (hyperbolic_length(pa, pb) <= kStep) return add(pb);
-        if (depth >= frame_.depth) {
-            flush();
-            broken_ = true;
-            return add(pb);
-        }
         V3 m{a.x + b.x, a.y + b.y, a.z + b.z};
         const double n = std::sqrt(dot(m, m));
         if (n < 1e-12) return add(pb);  // (antipodal ends: not in the data)
         m = {m.x / n, m.y / n, m.z / n};
-        edge(a, m, depth + 1);
-        edge(m, b, depth + 1);
+        if (hyperbolic_length(pa, pb) <= (std::fmax(pa.rho, pb.rho) > frame_.cull ? kCullStep : kMaxStep) &&
+            midpoint_bend_px(pa, pb, frame_.polar(m)) <= kBendPx) return add(pb);
+        if (arc(a, b) < frame_.min_arc) {
+            flush();
+            broken_ = true;
+            return add(pb);
+        }
+        edge(a, m);
+        edge(m, b);
     }
     void add(SceneBody::Vertex v) {
         if (v.rho > frame_.cull) {  // outside the view: the line ends here, or waits here
@@ -188,31 +229,86 @@ private:
 
 const Rgb kGraticule{55, 70, 95}, kCoast{130, 215, 150}, kTissot{235, 165, 70};
 
+// The angle from p to the great-circle arc from a to b (to its nearer end where p's foot on the
+// circle lies outside the arc; to a where the arc is a point).
+double arc_distance(V3 p, V3 a, V3 b) {
+    const V3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+    const double cn = std::sqrt(dot(c, c));
+    if (cn > 1e-15) {
+        // p's foot on the circle is on the arc when it lies after a and before b, going round c.
+        const V3 ca{c.y * a.z - c.z * a.y, c.z * a.x - c.x * a.z, c.x * a.y - c.y * a.x};
+        const V3 cb{c.y * b.z - c.z * b.y, c.z * b.x - c.x * b.z, c.x * b.y - c.y * b.x};
+        if (dot(p, ca) >= 0 && dot(p, cb) <= 0) return std::fabs(std::asin(std::fmax(-1.0, std::fmin(1.0, dot(p, c) / cn))));
+    }
+    return std::fmin(arc(p, a), arc(p, b));
+}
+
+// Douglas-Peucker on the sphere: keep[i] for the points of pts[first..last] a line within
+// tolerance (radians) of every point needs; the ends are kept.
+void simplify(const std::vector<V3>& pts, std::size_t first, std::size_t last, double tolerance, std::vector<char>& keep) {
+    keep[first] = keep[last] = 1;
+    if (last <= first + 1) return;
+    std::size_t far = first;
+    double worst = -1;
+    for (std::size_t i = first + 1; i < last; ++i) {
+        const double d = arc_distance(pts[i], pts[first], pts[last]);
+        if (d > worst) worst = d, far = i;
+    }
+    if (worst <= tolerance) return;
+    simplify(pts, first, far, tolerance, keep);
+    simplify(pts, far, last, tolerance, keep);
+}
+
+// A line through pts (closed: a ring, back to its first point) simplified to f.tolerance: a
+// ring from its start and the point farthest from it, so that it keeps an area.
+void simplified(Lines& lines, std::vector<V3>& pts, bool closed, const Placing& f, std::vector<char>& keep) {
+    if (closed) pts.push_back(pts.front());
+    keep.assign(pts.size(), 0);
+    if (closed) {
+        std::size_t far = 0;
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            if (arc(pts[i], pts[0]) > arc(pts[far], pts[0])) far = i;
+        simplify(pts, 0, far, f.tolerance, keep);
+        simplify(pts, far, pts.size() - 1, f.tolerance, keep);
+    } else {
+        simplify(pts, 0, pts.size() - 1, f.tolerance, keep);
+    }
+    lines.start(pts[0]);
+    for (std::size_t i = 1; i < pts.size(); ++i)
+        if (keep[i]) lines.to(pts[i]);
+    lines.end(closed);
+}
+
 // Meridians every 15 degrees from pole to pole, parallels every 15 degrees from 75 S to 75 N,
-// a point every 3 degrees (the halving above adds more where K = -1 needs them).
+// from a point every degree, simplified as the coastlines are (a meridian, a great circle, to
+// its poles and equator; the halving adds the points K = -1 needs).
 void graticule(Scene& s, const Placing& f) {
+    std::vector<V3> pts;
+    std::vector<char> keep;
     Lines meridians(s, f, "meridian", kGraticule);
     for (int lon = -180; lon < 180; lon += 15) {
-        meridians.start(unit(-90, lon));
-        for (int lat = -87; lat <= 90; lat += 3) meridians.to(unit(lat, lon));
-        meridians.end(false);
+        pts.clear();
+        for (int lat = -90; lat <= 90; ++lat) pts.push_back(unit(lat, lon));
+        simplified(meridians, pts, false, f, keep);
     }
     Lines parallels(s, f, "parallel", kGraticule);
     for (int lat = -75; lat <= 75; lat += 15) {
-        parallels.start(unit(lat, -180));
-        for (int lon = -177; lon <= 180; lon += 3) parallels.to(unit(lat, lon));
-        parallels.end(true);
+        pts.clear();
+        for (int lon = -180; lon < 180; ++lon) pts.push_back(unit(lat, lon));
+        simplified(parallels, pts, true, f, keep);
     }
 }
 
+// Natural Earth's lines, simplified to f.tolerance.
 void coastlines(Scene& s, const Placing& f) {
     Lines coast(s, f, "coast", kCoast);
+    std::vector<V3> pts;
+    std::vector<char> keep;
     for (const earth_data::Line& l : earth_data::kLines) {
-        auto at = [](int32_t i) { return unit(earth_data::kPoints[i][0] * 1e-4, earth_data::kPoints[i][1] * 1e-4); };
-        coast.start(at(l.first));
-        for (int32_t i = 1; i < l.count; ++i) coast.to(at(l.first + i));
-        if (l.closed) coast.to(at(l.first));
-        coast.end(l.closed);
+        pts.clear();
+        for (int32_t i = 0; i < l.count; ++i)
+            pts.push_back(unit(earth_data::kPoints[l.first + i][0] * 1e-4, earth_data::kPoints[l.first + i][1] * 1e-4));
+        simplified(coast, pts, l.closed, f, keep);
     }
 }
 
@@ -274,7 +370,8 @@ void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot
     if (view_km > 0) {
         f.scale = 1 / std::sqrt(s.curvature);
         f.cull = s.limit_radius + kCullMargin;
-        f.depth = kMaxDepth + static_cast<int>(std::ceil(std::log2(f.scale)));
+        f.min_arc /= f.scale;
+        f.tolerance /= f.scale;
     }
     graticule(s, f);
     coastlines(s, f);
