@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "render/body_points.hpp"
+#include "tissot_reference.hpp"
 #include "world/earth.hpp"
 #include "world/world.hpp"
 
@@ -21,39 +22,18 @@ namespace tissot_screen {  // (a unity batch shares this file's scope with other
 
 using namespace noneuclid;
 
-constexpr double kPi = 3.14159265358979323846, kRad = kPi / 180;
+using test::kPi;
+constexpr double kRad = kPi / 180;
 // The circle is not infinitesimal: the factors change across it by a relative O(a^2 tan^2 c)
 // (a = 500 / 6371), most for the gnomonic at 60 degrees; and the points are on a sub-pixel grid.
 constexpr double kWithin = 0.02;
 
-struct Row {
-    geo::Projection p;
-    const char* name;
-    double (*ratio)(double c);  // radial over tangential scale factor
-    double cut = kPi;           // where the view stops short of the limit circle (geometry/projection.hpp)
-};
-const Row kRows[] = {
-    {geo::Projection::orthographic, "orthographic", [](double c) { return std::cos(c); }},
-    {geo::Projection::lambert_equal_area, "lambert", [](double c) { return std::cos(c / 2) * std::cos(c / 2); }},
-    {geo::Projection::gnomonic, "gnomonic", [](double c) { return 1 / std::cos(c); }, kPi / 3},
-    {geo::Projection::stereographic, "stereographic", [](double) { return 1.0; }},
-    {geo::Projection::azimuthal_equidistant, "equidistant", [](double c) { return std::sin(c) / c; }},
-};
+using Row = test::tissot::Factors;
 
-// The grid's place (as the docs name it) nearest to the circle's first vertex: its own.
+// The circle's angle from the centre: that of the grid's place it belongs to.
 double angle_of_place(const world::SceneBody& b, double lat0, double lon0) {
-    const auto& v = b.vertices[0];
-    double best = 1e9, c = 0;
-    auto consider = [&](double lat, double lon) {
-        const world::EarthPolar q = world::earth_polar(lat0, lon0, lat, lon);
-        const double d = std::acos(std::clamp(std::cos(q.r) * std::cos(v.rho) + std::sin(q.r) * std::sin(v.rho) *
-                                                  std::cos((q.theta_deg - v.phi_deg) * kRad), -1.0, 1.0));
-        if (d < best) best = d, c = q.r;
-    };
-    for (int lat = -60; lat <= 60; lat += 30)
-        for (int lon = -180; lon < 180; lon += 30) consider(lat, lon);
-    consider(90, 0), consider(-90, 0);
-    return c;
+    const test::tissot::Place c = test::tissot::owner(b, lat0, lon0);
+    return world::earth_polar(lat0, lon0, c.lat, c.lon).r;
 }
 
 // The worst relative error of the drawn ellipses' axis ratios in one engine and projection,
@@ -94,7 +74,7 @@ double worst_ratio_error(const world::Scene& s, const Row& row, double lat0, dou
             const double r = x * ux + y * uy, t = -x * uy + y * ux;
             rmin = std::min(rmin, r), rmax = std::max(rmax, r), tmin = std::min(tmin, t), tmax = std::max(tmax, t);
         }
-        const double e = (rmax - rmin) / (tmax - tmin) / row.ratio(c) - 1;
+        const double e = (rmax - rmin) / (tmax - tmin) / (row.radial(c) / row.tangential(c)) - 1;
         EXPECT_NEAR(e, 0, kWithin) << row.name << " at c = " << c / kRad << " degrees";
         worst = std::max(worst, std::fabs(e));
         ++checked;
@@ -108,7 +88,7 @@ TEST(TissotOnScreen, EachDrawnEllipseHasItsProjectionsAxisRatio) {
     p.centre_lat = lat0, p.centre_lon = lon0, p.tissot = true;
     world::Scene s;
     ASSERT_TRUE(world::builtin_scene("earth", p, s));
-    for (const Row& row : kRows) {
+    for (const Row& row : test::tissot::kFactors) {
         int fixed_checked = 0, double_checked = 0;
         const double f = worst_ratio_error<fx::fixed>(s, row, lat0, lon0, fixed_checked);
         const double d = worst_ratio_error<double>(s, row, lat0, lon0, double_checked);

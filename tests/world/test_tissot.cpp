@@ -12,6 +12,7 @@
 
 #include "geometry/projection.hpp"
 #include "test_common.hpp"
+#include "tissot_reference.hpp"
 #include "world/earth.hpp"
 #include "world/scene.hpp"
 
@@ -31,37 +32,10 @@ std::vector<const world::SceneBody*> circles(const world::Scene& s) {
     return out;
 }
 
-// The distance on the unit sphere between two polar points about the same centre.
-double sphere_distance(double r1, double t1, double r2, double t2) {
-    const double c = std::cos(r1) * std::cos(r2) + std::sin(r1) * std::sin(r2) * std::cos((t1 - t2) * kRad);
-    return std::acos(std::clamp(c, -1.0, 1.0));
-}
-
-struct Place {
-    double lat, lon;
-};
-std::vector<Place> grid() {
-    std::vector<Place> out;
-    for (int lat = -60; lat <= 60; lat += 30)
-        for (int lon = -180; lon < 180; lon += 30) out.push_back({double(lat), double(lon)});
-    out.push_back({90, 0});
-    out.push_back({-90, 0});
-    return out;
-}
-
-// The place of the grid nearest to a circle's first vertex: the circle's own (no other place is
-// within 1000 km of it).
-Place owner(const world::SceneBody& b, double lat0, double lon0) {
-    const auto& v = b.vertices[0];
-    Place best{};
-    double d = 1e9;
-    for (const Place& p : grid()) {
-        const world::EarthPolar q = world::earth_polar(lat0, lon0, p.lat, p.lon);
-        const double e = sphere_distance(q.r, q.theta_deg, v.rho, v.phi_deg);
-        if (e < d) d = e, best = p;
-    }
-    return best;
-}
+using test::tissot::grid;
+using test::tissot::owner;
+using test::tissot::Place;
+using test::tissot::sphere_distance;
 
 TEST(Tissot, EveryCircleIs500KmAboutItsPlaceOnTheGrid) {
     for (const auto& [lat0, lon0] : {std::pair{51.5, 0.0}, {90.0, 0.0}, {0.0, 180.0}, {-33.9, 151.2}}) {
@@ -104,30 +78,13 @@ TEST(Tissot, EveryCircleIs500KmAboutItsPlaceOnTheGrid) {
 // projected vertices), divided by 2a, are the scale factors, to within the circle's finite size
 // (a = 500 / 6371: the factors vary across it by a relative O(a^2 tan^2 c), under 2% here).
 TEST(Tissot, EachCircleIsItsProjectionsEllipse) {
-    struct Row {
-        geo::Projection p;
-        const char* name;
-        double (*radial)(double c);
-        double (*tangential)(double c);
-    };
-    const Row rows[] = {
-        {geo::Projection::orthographic, "orthographic", [](double c) { return std::cos(c); }, [](double) { return 1.0; }},
-        {geo::Projection::lambert_equal_area, "lambert", [](double c) { return std::cos(c / 2); },
-         [](double c) { return 1 / std::cos(c / 2); }},
-        {geo::Projection::gnomonic, "gnomonic", [](double c) { return 1 / (std::cos(c) * std::cos(c)); },
-         [](double c) { return 1 / std::cos(c); }},
-        {geo::Projection::stereographic, "stereographic", [](double c) { return 1 / (std::cos(c / 2) * std::cos(c / 2)); },
-         [](double c) { return 1 / (std::cos(c / 2) * std::cos(c / 2)); }},
-        {geo::Projection::azimuthal_equidistant, "equidistant", [](double) { return 1.0; },
-         [](double c) { return c / std::sin(c); }},
-    };
     const double a = world::kTissotRadiusKm / kEarthKm;
     const double lat0 = 45, lon0 = 10;
     world::SceneParams params;
     params.centre_lat = lat0, params.centre_lon = lon0, params.tissot = true;
     world::Scene s;
     ASSERT_TRUE(world::builtin_scene("earth", params, s));
-    for (const Row& row : rows) {
+    for (const test::tissot::Factors& row : test::tissot::kFactors) {
         int checked = 0;
         double worst = 0;
         for (const world::SceneBody* b : circles(s)) {
