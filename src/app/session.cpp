@@ -1,6 +1,8 @@
 // Session<W> for each engine (see session.hpp).
 #include "app/session.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <iterator>
 
 #include "app/recorder.hpp"
@@ -9,6 +11,7 @@
 #include "render/measure_panel.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/worker_pool.hpp"
+#include "world/earth.hpp"
 
 namespace noneuclid::app {
 namespace {
@@ -124,6 +127,8 @@ public:
         const bool attract = autopilot_.active() || replayed_attract_;
         info.controls = attract ? (world_.game().on() ? kAttractGameLegend : kAttractLegend) : options_.legend.c_str();
         info.game = hud_game();
+        char note[80];
+        if (zoom_note(note, sizeof note)) info.note = note;
         render::draw_hud(c, font_, info);
     }
 
@@ -143,6 +148,17 @@ public:
 private:
     static constexpr int kQueue = 64;
 
+    // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
+    // zoom ends, that it ends there (docs/earth.md).
+    bool zoom_note(char* out, std::size_t size) const {
+        const auto z = world_.zoom();
+        if (!z.on) return false;
+        const double km = 3.14159265358979323846 * world::kEarthRadiusKm * std::sqrt(z.z);
+        std::snprintf(out, size, z.least  ? "view %.0f km: as close as the zoom goes"
+                                 : z.most ? "view %.0f km: the whole globe"
+                                          : "view %.0f km", km);
+        return true;
+    }
     void flush() {
         for (int i = 0; i < queued_; ++i) control(queue_[i]);
         queued_ = 0;

@@ -104,6 +104,10 @@ std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Sce
 inline constexpr const char* kKeysLegend =
     "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
 inline constexpr const char* kButtonsLegend = "thrust  left/right  fire  curvature +/-  preset  reset";
+// In a scene that zooms (the earth), where the curvature keys zoom.
+inline constexpr const char* kZoomKeysLegend =
+    "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
+inline constexpr const char* kZoomButtonsLegend = "thrust  left/right  zoom +/-  preset  reset";
 inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
 inline constexpr const char* kAttractGameLegend = "attract mode: press fire to play";
 

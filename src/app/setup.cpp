@@ -118,7 +118,8 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     // A scene file by its name alone: the HUD shows the same words however the path was spelt
     // (typed relative in a run, absolute in its recording), so a replay draws the same pixels.
     so.scene_name = std::filesystem::path(scene.name).filename().string();
-    so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
+    if (scene.zoom.on()) so.legend = legend == "keys" ? kZoomKeysLegend : kZoomButtonsLegend;
+    else so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
     so.attract.idle_seconds = o.attract;
     so.attract.sweep_seconds = o.sweep;
     so.threads = o.threads;

@@ -4,8 +4,8 @@
 // comes from the local polar vertices). One per body (the exact engine's Cache,
 // geometry/engine.hpp), owned by the drawing's scratch (render's DrawScratch, ParallelScratch),
 // made for the body when the scratch is prepared (this allocates), and refreshed in place,
-// without allocating, when K differs from the K it was last refreshed at or the body took a new
-// shape of as many vertices (its `shape` count). A body here is anything with `local` (its
+// without allocating, when K differs from the K it was last refreshed at, the body took a new
+// shape of as many vertices (its `shape` count) or its vertices' rho changed (`sized`). A body here is anything with `local` (its
 // vertices in local polar coordinates), `shape` and `closed()` (world::Body). The
 // threaded frame hands each body to one thread, which alone refreshes
 // that body's cache: no cache is written by two threads at once.
@@ -26,6 +26,7 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     using Math = SlerpMath<T>;
     T K{};
     uint32_t shape = 0;  // the body's shape count it was made for (world::Body::shape)
+    uint32_t sized = 0;  // and its count of changes to the vertices' rho alone (world::Body::sized)
     bool valid = false;
     std::vector<Vec3<T>> local;  // per vertex
     std::vector<T> root;              // per vertex: root_S_K(K, rho), for the edge lengths
@@ -86,7 +87,7 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
     template <class B>
     const ShapeCache& refresh(T curvature, const B& b) {
         if (shape != b.shape) set_angles(b);
-        if (valid && K == curvature) return *this;
+        if (valid && K == curvature && sized == b.sized) return *this;
         const std::size_t n = b.local.size(), edges = walked.size();
         for (std::size_t i = 0; i < n; ++i) {  // to_vec and root_S_K, S_K taken once
             const T rho = b.local[i].r, s = S_K(curvature, rho);
@@ -107,7 +108,7 @@ struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be 
                         (curvature * d * d > T(2) && antipodal_edge(curvature, d, Sf(curvature * d * d)));
             h[e] = walked[e] ? typename Math::W{} : Math::half(u[e]);
         }
-        K = curvature, valid = true;
+        K = curvature, sized = b.sized, valid = true;
         return *this;
     }
 };

@@ -1,5 +1,6 @@
 #include "render/hud.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 #include "render/raster.hpp"
@@ -66,7 +67,9 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
     const int scale = c.height() >= 900 ? 2 : 1;
     const int margin = 6 * scale, line = font.height * scale + 2 * scale;
     char text[96];
-    std::snprintf(text, sizeof text, "K = %+.3f  %s", h.K, curvature_word(h.K));
+    // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)
+    std::snprintf(text, sizeof text, h.K != 0 && std::fabs(h.K) < 5e-4 ? "K = %+.2e  %s" : "K = %+.3f  %s", h.K,
+                  curvature_word(h.K));
     draw_text(c, font, margin, margin, text, color, scale);
     int y = margin + line;
     if (h.fps > 0) {
@@ -77,7 +80,9 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
     if (h.scene[0] || h.projection[0]) {
         std::snprintf(text, sizeof text, "%s  %s", h.scene, h.projection);
         draw_text(c, font, margin, y, text, dim, scale);
+        y += line;
     }
+    if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
     draw_text(c, font, margin, c.height() - margin - font.height * scale, h.controls, dim, scale);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }

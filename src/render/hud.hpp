@@ -28,6 +28,7 @@ struct HudInfo {
     const char* scene = "";
     const char* projection = "";
     const char* controls = "";  // the bottom line: the controls' legend, from the app
+    const char* note = "";      // a line under the scene's (the earth's zoom: its view in km)
 };
 
 // "spherical", "flat" or "hyperbolic": the sign of K, flat within half a Q16.16 step of 0.

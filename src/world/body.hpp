@@ -19,6 +19,7 @@ struct alignas(64) Body {
     geo::Coast<T> coast;               // the straight stretch it is on (geometry/coast.hpp)
     const SceneBody* desc = nullptr;   // name, colour, closed, tessellation, kind
     uint32_t shape = 0;    // counts the changes of `local` (a game's new asteroid): caches follow it
+    uint32_t sized = 0;    // counts the changes of local's rho alone (a zoom, Scene::zoom): the same
     uint32_t serial = 0;   // a game's asteroid or bullet: its number ("asteroid 12"); 0 otherwise
     bool active = true;    // in the world: moved, drawn, dumped, hit (a game's spare slots are not)
     bool hidden = false;   // in the world but not drawn this frame (the respawned ship blinking)

@@ -70,7 +70,7 @@ constexpr double kBendPx = 1, kMaxStep = 0.5, kCullStep = 0.1, kMinArc = 3 * kDe
 // The coastlines are simplified when the scene is built (Douglas-Peucker on the sphere): every
 // point left out lies within kSimplifyPx of the kept line, in pixels of the kiosk's disc
 // (kDiscPx: 800x480, the disc pi world units across its radius).
-constexpr double kSimplifyPx = 0.25, kDiscPx = 240;
+constexpr double kSimplifyPx = 0.5, kDiscPx = 240;
 // A body's vertices at most (Budget::kVerticesPerBody is far above it): a longer line goes on
 // in a new body from the same point.
 constexpr std::size_t kPieceVertices = 4000;
@@ -78,6 +78,8 @@ constexpr std::size_t kPieceVertices = 4000;
 // kCullMargin outside the limit circle, and an edge whose every point lies farther (both ends
 // farther than half its length) is not halved at all.
 constexpr double kCullMargin = 0.25;
+// Past this rho the bend bound's K = -1 numbers overflow (cosh 710 is double's largest).
+constexpr double kFarRho = 100;
 // A polar point on the hyperboloid of K = -1 (x0 = cosh r), and the Minkowski product.
 struct H3 {
     double t, x, y;
@@ -121,6 +123,7 @@ double midpoint_bend_px(SceneBody::Vertex a, SceneBody::Vertex b, SceneBody::Ver
 struct Placing {
     Frame frame;
     double scale = 1, cull = 1e300;
+    bool bend = true;  // halve edges by the bend bound (else only by length: great circles at K = z)
     double tolerance = kSimplifyPx * kPi / kDiscPx;  // the coastlines' simplification, radians of the Earth
     double min_arc = kMinArc;
     SceneBody::Vertex polar(V3 v) const {
@@ -172,7 +175,15 @@ private:
         const double n = std::sqrt(dot(m, m));
         if (n < 1e-12) return add(pb);  // (antipodal ends: not in the data)
         m = {m.x / n, m.y / n, m.z / n};
-        if (hyperbolic_length(pa, pb) <= (std::fmax(pa.rho, pb.rho) > frame_.cull ? kCullStep : kMaxStep) &&
+        if (!frame_.bend) {  // the great circle is the geodesic: halved only to keep edges short
+            if (arc(a, b) * frame_.scale <= kMaxStep) return add(pb);
+            edge(a, m);
+            return edge(m, b);
+        }
+        // (Far past the view the hyperboloid's cosh r overflows: such an edge is halved until
+        // the cull above takes its pieces.)
+        if (std::fmax(pa.rho, pb.rho) < kFarRho &&
+            hyperbolic_length(pa, pb) <= (std::fmax(pa.rho, pb.rho) > frame_.cull ? kCullStep : kMaxStep) &&
             midpoint_bend_px(pa, pb, frame_.polar(m)) <= kBendPx) return add(pb);
         if (arc(a, b) < frame_.min_arc) {
             flush();
@@ -363,10 +374,11 @@ double earth_view_curvature(double view_km) {
     return q * q;
 }
 
-void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot_circles) {
+void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot_circles, bool bend) {
     s.curvature = view_km > 0 ? earth_view_curvature(view_km) : 1;
     s.limit_radius = kPi;
     Placing f{Frame(lat0, lon0)};
+    f.bend = bend;
     if (view_km > 0) {
         f.scale = 1 / std::sqrt(s.curvature);
         f.cull = s.limit_radius + kCullMargin;
@@ -376,6 +388,27 @@ void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot
     graticule(s, f);
     coastlines(s, f);
     if (tissot_circles) tissot(s, f);
+}
+
+void earth_zoom_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot_circles) {
+    std::vector<double> views = {0};  // the whole globe, then each half the last
+    for (double w = kEarthZoomFirstKm; w >= kEarthViewMinKm; w /= 2) views.push_back(w);
+    if (view_km > 0 && view_km < kEarthViewMaxKm) {  // the start, a level of its own (as --view drew it)
+        bool known = false;
+        for (double w : views) known = known || w == view_km;
+        if (!known) views.push_back(view_km);
+    }
+    for (double w : views)
+        for (bool bent : {false, true}) {
+            Scene t;
+            earth_scene(t, lat0, lon0, w, tissot_circles, bent);
+            s.zoom.levels.push_back({t.curvature, bent, static_cast<int>(s.bodies.size()), static_cast<int>(t.bodies.size())});
+            for (SceneBody& b : t.bodies) s.bodies.push_back(std::move(b));
+        }
+    s.curvature = s.zoom.start = view_km > 0 ? earth_view_curvature(view_km) : 1;
+    s.limit_radius = kPi;
+    s.zoom.least = earth_view_curvature(kEarthViewMinKm);
+    s.zoom.most = 1;
 }
 
 }  // namespace noneuclid::world

@@ -46,6 +46,17 @@ inline constexpr int kTissotGridDeg = 30;
 // whole globe at K = +1, a place at its angle from the centre. Else zoomed: K from
 // earth_view_curvature, a place at its distance on that sphere (its angle / sqrt K), and only
 // the lines within the view (and just past its edge) kept. tissot: Tissot's circles too.
-void earth_scene(Scene& s, double lat0, double lon0, double view_km = 0, bool tissot = false);
+// bend false: edges halved only to keep them short, for the sphere of the scene's own K alone
+// (where the great circles are the geodesics), not by the bend bound that keeps them on the
+// Earth's lines at every K.
+void earth_scene(Scene& s, double lat0, double lon0, double view_km = 0, bool tissot = false, bool bend = true);
+
+// The built-in earth scene: earth_scene's lines at several zooms (Scene::zoom's levels: the
+// whole globe, then kEarthZoomFirstKm and each half the last down to kEarthViewMinKm, and
+// view_km's own), so that the curvature keys zoom live from the globe to a town
+// (docs/earth.md): a level shown down to half its view has its lines simplified to a pixel at
+// most. It starts at view_km (0: the globe).
+inline constexpr double kEarthZoomFirstKm = 10000;
+void earth_zoom_scene(Scene& s, double lat0, double lon0, double view_km = 0, bool tissot = false);
 
 }  // namespace noneuclid::world

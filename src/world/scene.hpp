@@ -109,6 +109,29 @@ struct MeasureDecl {
 };
 inline constexpr int kMeasureMaxSides = 12, kMeasureMaxAround = 12;
 
+// Zoom by curvature (the earth scene, world/earth.hpp; docs/earth.md): the curvature keys
+// scale the picture instead of bending it. The zoom is a curvature z, the sphere the Earth is
+// at that scale: a level's bodies were placed for the sphere of its own curvature, a place at
+// its angle / sqrt(level), and the world shows them at z by scaling every vertex's rho by
+// sqrt(level / z). Each level is built twice: with its edges halved so that they follow the
+// Earth's lines at any K (`bent`), and without (the Earth's lines are the geodesics themselves
+// while K = z). The world draws one: the level of the least curvature at or above z, the plain
+// one while K = z, the bent one after K was set apart from it (keys 1, 2, 3, a preset).
+struct ZoomLevel {
+    double curvature = 1;   // the sphere its bodies were placed for
+    bool bent = false;      // halved for every K (else drawn only while K = z)
+    int first = 0, count = 0;  // its bodies: scene.bodies[first, first + count)
+};
+struct Zoom {
+    std::vector<ZoomLevel> levels;  // none: the curvature keys change K, keeping every (r, theta)
+    double start = 1;               // z at the start (and after reset)
+    double least = 0, most = 1;     // z's range
+    // Held curvature up (down): z divided (multiplied) by kStep every step, a multiplication
+    // alone so that every machine gives the same z bit for bit: 6.7 times a second at 60 steps.
+    static constexpr double kStep = 31.0 / 32;
+    bool on() const { return !levels.empty(); }
+};
+
 struct Scene {
     std::string name;
     double curvature = 0;
@@ -119,6 +142,7 @@ struct Scene {
     double curvature_rate = 0.5;    // curvature up/down while held, per second
     double sweep_rate = 0;          // K changes by this per second on its own (fig17), bouncing at +-1
     std::vector<SceneBody> bodies;
+    Zoom zoom;                     // zoom.on(): the curvature keys zoom (the earth scene)
     GameSettings game;             // game.on: the Asteroids game runs in this scene
     std::vector<MeasureDecl> measures;  // instruments shown from the start (the live one is extra)
 };

@@ -314,7 +314,7 @@ const SceneRow kScenes[] = {
     {"fig16", "the paper's figure 16: the square at ninety pixels", [](Scene& s, const SceneParams&) { fig16(s); }},
     {"fig17", "the paper's figure 17: the grid while K sweeps from -1 to +1", [](Scene& s, const SceneParams&) { fig17(s); }},
     {"earth", "the Earth's coastlines and graticule about a place (--centre LAT,LON), at any K, zoomed by K (--view KM), with Tissot's circles (--tissot), and the ship", [](Scene& s, const SceneParams& p) {
-         earth_scene(s, p.centre_lat, p.centre_lon, p.view_km, p.tissot);
+         earth_zoom_scene(s, p.centre_lat, p.centre_lon, p.view_km, p.tissot);
          s.bodies.push_back(place(ship(), 0, 0, 90, 0, 90, 0));  // to fly over it (figure 3 leaves it out)
      }},
     {"stress", "many bodies of many vertices (--bodies, --vertices, --tessellation)", [](Scene& s, const SceneParams& p) { stress(s, p); }},

@@ -22,8 +22,12 @@
 //     R = pi/sqrt K this is exactly the geodesic continuing through the antipode (tested).
 // Curvature: changing K leaves every body's polar numbers as they are (the paper); held
 // curvature up/down changes K by `curvature_rate` per second, clamped to [-1, 1]; next preset
-// cycles the scene's presets; reset restores the scene's initial state. Same actions, same
-// result, bit for bit: nothing here reads a clock or a random number.
+// cycles the scene's presets; reset restores the scene's initial state. In a scene that zooms
+// (Scene::zoom, the earth scene) held curvature up/down zooms instead: z, the curvature the
+// picture is the sphere of, is multiplied by a constant each step within z's range, K = z, and
+// the level for z is shown (its bodies active, their vertices' rho scaled by sqrt(level / z));
+// the other levels' bodies are inactive. Same actions, same result, bit for bit: nothing here
+// reads a clock or a random number.
 //
 // Memory: bodies and their vertices are allocated when the world is built; step() allocates
 // nothing.
@@ -94,6 +98,9 @@ public:
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
         game_.setup(*this);
         update_gauges();
+        zoom_ = scene_.zoom.start;
+        show_zoom();
+        initial_level_ = shown_level_, initial_zoom_ = shown_zoom_;
         initial_ = bodies;
         initial_K_ = K;
         initial_game_ = game_;
@@ -130,6 +137,7 @@ public:
             case Action::instrument: gauges_.back().cycle(); break;
             default: break;
         }
+        show_zoom();  // (K set apart from the zoom, or back to it: the level's other build)
     }
     void release(Action a) { held_[static_cast<int>(a)] = false; }
 
@@ -137,7 +145,9 @@ public:
     void step(double dt) {
         const geo::Tick<T> tick = tick_of(dt);
         const int dk = held(Action::curvature_up) - held(Action::curvature_down);
-        if (dk != 0) K = clamp_k(K + geo::times_dt(T(scene_.curvature_rate) * T(dk), tick));
+        if (dk != 0 && scene_.zoom.on()) zoom_by(dk);
+        else if (dk != 0) K = clamp_k(K + geo::times_dt(T(scene_.curvature_rate) * T(dk), tick));
+        if (scene_.zoom.on()) show_zoom();
         if (scene_.sweep_rate != 0) {
             K = K + geo::times_dt(T(scene_.sweep_rate) * T(sweep_dir_), tick);
             if (K >= T(1)) K = T(1), sweep_dir_ = -1;
@@ -183,10 +193,23 @@ public:
     void reset() {
         bodies = initial_;
         K = initial_K_;
+        zoom_ = scene_.zoom.start;
+        shown_level_ = initial_level_, shown_zoom_ = initial_zoom_;
         game_ = initial_game_;
         sweep_dir_ = 1;
         for (Gauge<T>& g : gauges_) g.touch();
         update_gauges();
+    }
+
+    // The zoom (Scene::zoom): z, and whether it is at either end of its range. Off: no zoom.
+    struct ZoomReading {
+        bool on = false;
+        double z = 1;
+        bool least = false, most = false;
+    };
+    ZoomReading zoom() const {
+        const Zoom& zm = scene_.zoom;
+        return {zm.on(), zoom_, zm.on() && zoom_ <= zm.least, zm.on() && zoom_ >= zm.most};
     }
 
     // The body's vertices in global polar coordinates.
@@ -252,6 +275,37 @@ private:
         return t;
     }
     static T clamp_k(T k) { return k < T(-1) ? T(-1) : (k > T(1) ? T(1) : k); }
+    // Held zoom in (dk < 0) or out: z by Zoom::kStep within its range, and K = z.
+    void zoom_by(int dk) {
+        const Zoom& zm = scene_.zoom;
+        const double z = dk > 0 ? zoom_ / Zoom::kStep : zoom_ * Zoom::kStep;
+        zoom_ = z < zm.least ? zm.least : (z > zm.most ? zm.most : z);
+        K = T(zoom_);
+    }
+    // The level for z and K active (the others not), its vertices scaled to z; nothing done
+    // when neither changed. Allocates nothing: a level's bodies keep their vertex counts.
+    void show_zoom() {
+        const Zoom& zm = scene_.zoom;
+        if (!zm.on()) return;
+        const bool bent = K != T(zoom_);
+        int pick = -1;
+        for (int i = 0; i < static_cast<int>(zm.levels.size()); ++i) {
+            const ZoomLevel& l = zm.levels[i];
+            if (l.bent == bent && l.curvature >= zoom_ && (pick < 0 || l.curvature < zm.levels[pick].curvature)) pick = i;
+        }
+        if (pick < 0 || (pick == shown_level_ && zoom_ == shown_zoom_)) return;
+        const ZoomLevel& l = zm.levels[pick];
+        const double f = std::sqrt(l.curvature / zoom_);
+        for (const ZoomLevel& o : zm.levels)
+            for (int b = o.first; b < o.first + o.count; ++b) bodies[b].active = &o == &l;
+        for (int b = l.first; b < l.first + l.count; ++b) {
+            Body<T>& body = bodies[b];
+            const std::vector<SceneBody::Vertex>& v = scene_.bodies[b].vertices;
+            for (std::size_t i = 0; i < v.size(); ++i) body.local[i].r = T(v[i].rho * f);
+            ++body.sized;
+        }
+        shown_level_ = pick, shown_zoom_ = zoom_;
+    }
     Body<T> make_body(const SceneBody& sb) const {
         Body<T> b;
         b.centre = {T(sb.r), geo::wrap_pi(T(sb.theta_deg * kDegree))};
@@ -266,6 +320,8 @@ private:
     }
     void copy_from(const World& o) {
         K = o.K, R = o.R, time = o.time, frame = o.frame;
+        zoom_ = o.zoom_, shown_zoom_ = o.shown_zoom_, initial_zoom_ = o.initial_zoom_;
+        shown_level_ = o.shown_level_, initial_level_ = o.initial_level_;
         bodies = o.bodies;
         initial_ = o.initial_;
         initial_K_ = o.initial_K_;
@@ -286,6 +342,11 @@ private:
     Game<T> game_, initial_game_;
     int sweep_dir_ = 1;
     bool held_[kActionCount] = {};
+    double zoom_ = 1;                 // z (Scene::zoom)
+    int shown_level_ = -1;            // the level shown, and the z its vertices were scaled to
+    double shown_zoom_ = 0;
+    int initial_level_ = -1;          // the same at the start (reset)
+    double initial_zoom_ = 0;
 };
 
 }  // namespace noneuclid::world

@@ -13,7 +13,8 @@
 // curvature (the kiosk starts flat, where the double engine's series are at their cheapest);
 // K = sweep changes it every frame as attract mode does, from -0.6 (sweep@K0: from K0), so every
 // body's shape cache (geo::ShapeCache) is rebuilt every frame: the worst case of the frame
-// stage.
+// stage. K = zoom: curvature down held from the start, so that a scene that zooms (the earth)
+// zooms in every frame (its vertices rescaled, its shape caches rebuilt).
 // The cost of one is (count at N - count at 0) / N: the run at N = 0 does the same set-up and
 // the same one warm-up frame.
 #include <algorithm>
@@ -121,13 +122,14 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     if (K && std::string(K).rfind("sweep", 0) == 0) {  // attract mode's sweep: K changes every frame (-1 to 1 in 40 s)
         scene.curvature = std::string(K).size() > 6 ? std::atof(K + 6) : -0.6;  // sweep@K0 starts at K0
         scene.sweep_rate = 0.05;
-    } else if (K && *K) {
+    } else if (K && *K && std::strcmp(K, "zoom") != 0) {
         scene.curvature = std::atof(K);
     }
     if (filled)
         for (world::SceneBody& b : scene.bodies)
             if (b.texture) b.texture = nullptr, b.filled = true, b.fill = {200, 120, 60};
     world::World<T> wd(scene);
+    if (K && std::strcmp(K, "zoom") == 0) wd.press(world::Action::curvature_down);
     if (game) {  // in play: fire held, turning, until the bullets are all in flight
         wd.press(world::Action::fire);
         wd.press(world::Action::turn_left);

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "render/body_points.hpp"
+#include "earth_level.hpp"
 #include "tissot_reference.hpp"
 #include "world/earth.hpp"
 #include "world/world.hpp"
@@ -86,8 +87,7 @@ TEST(TissotOnScreen, EachDrawnEllipseHasItsProjectionsAxisRatio) {
     const double lat0 = 45, lon0 = 10;
     world::SceneParams p;
     p.centre_lat = lat0, p.centre_lon = lon0, p.tissot = true;
-    world::Scene s;
-    ASSERT_TRUE(world::builtin_scene("earth", p, s));
+    const world::Scene s = test::earth_level(p);
     for (const Row& row : test::tissot::kFactors) {
         int fixed_checked = 0, double_checked = 0;
         const double f = worst_ratio_error<fx::fixed>(s, row, lat0, lon0, fixed_checked);

@@ -14,6 +14,7 @@
 #include "test_common.hpp"
 #include "tissot_reference.hpp"
 #include "world/earth.hpp"
+#include "earth_level.hpp"
 #include "world/scene.hpp"
 
 namespace {
@@ -41,10 +42,9 @@ TEST(Tissot, EveryCircleIs500KmAboutItsPlaceOnTheGrid) {
     for (const auto& [lat0, lon0] : {std::pair{51.5, 0.0}, {90.0, 0.0}, {0.0, 180.0}, {-33.9, 151.2}}) {
         world::SceneParams p;
         p.centre_lat = lat0, p.centre_lon = lon0, p.tissot = true;
-        world::Scene s, plain;
-        ASSERT_TRUE(world::builtin_scene("earth", p, s));
+        const world::Scene s = test::earth_level(p);
         p.tissot = false;
-        ASSERT_TRUE(world::builtin_scene("earth", p, plain));
+        const world::Scene plain = test::earth_level(p);
         EXPECT_TRUE(circles(plain).empty());
         const std::vector<const world::SceneBody*> cs = circles(s);
         std::vector<int> seen(grid().size(), 0);
@@ -82,8 +82,7 @@ TEST(Tissot, EachCircleIsItsProjectionsEllipse) {
     const double lat0 = 45, lon0 = 10;
     world::SceneParams params;
     params.centre_lat = lat0, params.centre_lon = lon0, params.tissot = true;
-    world::Scene s;
-    ASSERT_TRUE(world::builtin_scene("earth", params, s));
+    const world::Scene s = test::earth_level(params);
     for (const test::tissot::Factors& row : test::tissot::kFactors) {
         int checked = 0;
         double worst = 0;
@@ -115,8 +114,7 @@ TEST(Tissot, EachCircleIsItsProjectionsEllipse) {
 TEST(Tissot, ZoomedTheCirclesKeepTheirKilometres) {
     world::SceneParams p;
     p.view_km = 5000, p.tissot = true;
-    world::Scene s;
-    ASSERT_TRUE(world::builtin_scene("earth", p, s));
+    const world::Scene s = test::earth_level(p);
     const double unit_km = kEarthKm * std::sqrt(s.curvature);  // a world unit on the zoomed sphere
     // About 51.5 N 0 E, 5000 km: the places within view (60 N and 30 N at 30 W, 0 and 30 E, and
     // more) have their circles, each circle's first vertex 500 km from its place.
