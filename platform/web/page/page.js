@@ -275,11 +275,15 @@
 
   // The K slider steers K to its value by holding curvature up or down, as a visitor holding the
   // button would: the recording replays it.
+  // (In the earth scene the keys zoom, K within (0, 1]: where K stops moving, the steering stops.)
+  let kLast = null, frameLast = null;
   function steerCurvature() {
     if (kTarget === null) return;
-    const K = mod._nw_curvature();
+    const K = mod._nw_curvature(), frame = mod._nw_frame();
     const want = kTarget > K ? control.curvature_up : kTarget < K ? control.curvature_down : -1;
-    if (kHeld >= 0 && want !== kHeld) {  // reached or passed: done
+    const stuck = kHeld >= 0 && K === kLast && frame !== frameLast;  // (a step went by, K did not move)
+    kLast = K, frameLast = frame;
+    if (kHeld >= 0 && (want !== kHeld || stuck)) {  // reached, passed or as far as it goes: done
       input(kHeld, false);
       kTarget = null, kHeld = -1;
     } else if (kHeld < 0) {
