@@ -45,6 +45,11 @@ std::vector<Choice> display_choices() {
     for (std::size_t i = 0; i < n; ++i) out.push_back({rows[i].name, rows[i].help});
     return out;
 }
+std::vector<Choice> palette_choices() {
+    std::vector<Choice> out;
+    for (render::Palette p : render::kPalettes) out.push_back({render::palette_name(p), render::palette_help(p)});
+    return out;
+}
 std::vector<std::string> names_of(const std::vector<Choice>& choices) {
     std::vector<std::string> names;
     for (const Choice& c : choices) names.push_back(c.name);
@@ -166,6 +171,21 @@ const OptionRow kOptions[] = {
     {"--hud", "", kPicture, "K, the scene and the controls over the picture (run: on)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.hud = true; }},
     {"--no-hud", "", kPicture | kDemo, "no HUD", nullptr, [](Args&, const std::string&, Options& o, Command) { o.hud = false; }},
+    {"--palette", "P", kPicture, "the colours (docs/accessibility.md):", palette_choices,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         const std::string v = a.value(opt);
+         if (!render::parse_palette(v, o.palette))
+             throw UsageError{opt + " takes " + world::or_list(render::palette_names(), false) + ", not '" + world::printable(v) + "'."};
+     }},
+    {"--large-hud", "", kPicture, "the HUD's text twice as large (docs/accessibility.md)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.large_hud = true; }},
+    {"--no-large-hud", "", kPicture, "the HUD's text at its usual size (the default)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.large_hud = false; }},
+    {"--one-button", "", kRun, "fire alone plays: the ship turns by itself, hold fire to thrust, tap to fire (or, "
+     "without the game, for the next K); docs/accessibility.md", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},
+    {"--no-one-button", "", kRun, "every button does its own action (the default)", nullptr,
+     [](Args&, const std::string&, Options& o, Command) { o.one_button = false; }},
     {"--font", "F", kPicture,
      "the HUD's font: builtin or a PSF console font file (default $NONEUCLID_FONT, else Terminus or Fixed from "
      "/usr/share/consolefonts, else builtin)",
@@ -312,7 +332,7 @@ void apply_settings(const Script& script, Options& o, Command c) {
         const std::string where = script.file + ":" + std::to_string(s.line) + ": ";
         try {
             std::vector<std::string> words;
-            if (s.key == "aa" || s.key == "hud" || s.key == "tissot") {  // flags: on or off
+            if (s.key == "aa" || s.key == "hud" || s.key == "tissot" || s.key == "large-hud") {  // flags: on or off
                 words.push_back(std::string(parse_on_off(s.key, s.value) ? "--" : "--no-") + s.key);
             } else {
                 words = {"--" + s.key, s.value};
@@ -333,6 +353,9 @@ void apply_board(const files::Board& b, Options& o) {
     o.projection = parse_projection("the board's projection", b.projection);
     o.aa = b.antialias;
     o.hud = b.hud;
+    o.large_hud = b.large_hud;
+    o.one_button = b.one_button;
+    if (!render::parse_palette(b.palette, o.palette)) o.palette = render::Palette::scene;  // (checked when read)
     o.threads = b.threads;
     o.fps = b.fps;
     o.attract = b.idle_seconds;

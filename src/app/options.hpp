@@ -13,6 +13,7 @@
 #include "world/engines.hpp"
 #include "app/script.hpp"
 #include "geometry/measure.hpp"
+#include "render/palette.hpp"
 #include "files/board.hpp"
 #include "world/scene.hpp"
 
@@ -51,6 +52,9 @@ struct Options {
     render::PixelFormat format = render::PixelFormat::xrgb8888();
     bool aa = false;
     bool hud = false;           // run: true
+    render::Palette palette = render::Palette::scene;  // the colours (docs/accessibility.md)
+    bool large_hud = false;     // the HUD's text twice as large
+    bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)
     long best = 0;              // the game's high score shown before any game ends (run: the table's)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "app/one_button.hpp"
 #include "app/recorder.hpp"
 #include "geometry/local_frame.hpp"
 #include "render/hud.hpp"
@@ -96,6 +97,11 @@ public:
         const int n = autopilot_.frame(world_.time, pilot_view(), ap);
         if (!was && autopilot_.active()) record(ScriptEvent::attract_on);
         for (int i = 0; i < n; ++i) apply(ap[i]);
+        if (options_.one_button && !autopilot_.active()) {
+            world::InputEvent ob[2];
+            const int k = one_button_.step(world_.time, world_.held(world::Action::turn_left), ob);
+            for (int i = 0; i < k; ++i) apply(ob[i]);
+        }
         const world::GamePhase before = world_.game().phase;
         world_.step(dt_);
         game_events(before);
@@ -129,7 +135,9 @@ public:
         info.game = hud_game();
         char note[80];
         if (zoom_note(note, sizeof note)) info.note = note;
-        render::draw_hud(c, font_, info);
+        info.large = options_.large_hud;
+        const render::PaletteFrame colours = render::palette_frame(options_.draw.palette);
+        render::draw_hud(c, font_, info, colours.text, colours.dim);
     }
 
     void dump(int width, int height, std::string& line) const override {
@@ -147,6 +155,7 @@ public:
 
 private:
     static constexpr int kQueue = 64;
+    OneButton one_button_;
 
     // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
     // zoom ends, that it ends there (docs/earth.md).
@@ -173,6 +182,12 @@ private:
             for (int i = 0; i < n; ++i) apply(ap[i]);
         }
         user_held_[static_cast<int>(e.control)] = e.pressed;
+        if (options_.one_button && e.control == world::Control::fire) {  // (app/one_button.hpp)
+            world::InputEvent out[2];
+            const int n = one_button_.fire(e.pressed, world_.time, world_.game().on(), out);
+            for (int i = 0; i < n; ++i) apply(out[i]);
+            return;
+        }
         apply(e);
     }
     // Takes effect and is recorded: a world action when it changes something (a press of what

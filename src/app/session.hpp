@@ -28,6 +28,8 @@ class Recorder;
 struct SessionOptions {
     render::DrawOptions draw;
     bool hud = true;
+    bool large_hud = false;       // the HUD's text twice as large
+    bool one_button = false;      // fire alone plays (app/one_button.hpp)
     bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
     std::string scene_name;
     std::string legend;           // the HUD's controls line
@@ -108,6 +110,9 @@ inline constexpr const char* kButtonsLegend = "thrust  left/right  fire  curvatu
 inline constexpr const char* kZoomKeysLegend =
     "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
 inline constexpr const char* kZoomButtonsLegend = "thrust  left/right  zoom +/-  preset  reset";
+// One-button mode (app/one_button.hpp): fire alone.
+inline constexpr const char* kOneButtonGameLegend = "one button: hold fire to thrust, tap to fire";
+inline constexpr const char* kOneButtonLegend = "one button: hold fire to thrust, tap for the next K";
 inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
 inline constexpr const char* kAttractGameLegend = "attract mode: press fire to play";
 

@@ -67,6 +67,8 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     rec.setting("projection", geo::projection_name(o.projection));
     rec.setting("aa", o.aa ? "on" : "off");
     rec.setting("hud", o.hud ? "on" : "off");
+    if (o.palette != render::Palette::scene) rec.setting("palette", render::palette_name(o.palette));
+    if (o.large_hud) rec.setting("large-hud", "on");
     rec.setting("legend", o.legend.empty() ? "buttons" : o.legend);
     rec.setting("font", font_setting(font));
     for (const render::PixelFormat& f : render::kNamedFormats)
@@ -114,12 +116,18 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.draw.antialias = o.aa;
     so.draw.line_width = static_cast<int32_t>(o.line_width * render::kSub + 0.5);
     so.hud = o.hud;
+    so.large_hud = o.large_hud;
+    so.one_button = o.one_button;
+    so.draw.palette = o.palette;
+    const render::PaletteFrame frame = render::palette_frame(o.palette);
+    so.draw.background = frame.background, so.draw.outside = frame.outside, so.draw.rim = frame.rim;
     so.show_fps = o.stats;
     // A scene file by its name alone: the HUD shows the same words however the path was spelt
     // (typed relative in a run, absolute in its recording), so a replay draws the same pixels.
     so.scene_name = std::filesystem::path(scene.name).filename().string();
     if (scene.zoom.on()) so.legend = legend == "keys" ? kZoomKeysLegend : kZoomButtonsLegend;
     else so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
+    if (o.one_button) so.legend = scene.game.on ? kOneButtonGameLegend : kOneButtonLegend;
     so.attract.idle_seconds = o.attract;
     so.attract.sweep_seconds = o.sweep;
     so.threads = o.threads;

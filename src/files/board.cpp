@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "geometry/geometry.hpp"
+#include "render/palette.hpp"
 #include "world/engines.hpp"
 #include "world/quote.hpp"
 #include "files/text_file.hpp"
@@ -48,7 +49,7 @@ void read_board(const toml::table& root, Board& b) {
     if (root.get("models")) b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
-        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "threads"});
+        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "palette", "large_hud", "one_button", "threads"});
         b.device = d.plain_string("device", b.device);
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
         b.scene = d.plain_string("scene", b.scene);
@@ -62,6 +63,12 @@ void read_board(const toml::table& root, Board& b) {
             throw Bad{t->get("projection")->source(), "display: expected projection = " + world::or_list(geo::projection_names(), true) + ", found \"" + world::printable(b.projection) + "\""};
         b.antialias = d.boolean("antialias", b.antialias);
         b.hud = d.boolean("hud", b.hud);
+        b.large_hud = d.boolean("large_hud", b.large_hud);
+        b.one_button = d.boolean("one_button", b.one_button);
+        b.palette = d.string("palette", b.palette);
+        render::Palette palette{};
+        if (!render::parse_palette(b.palette, palette))
+            throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(render::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
         b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));
     }
     if (const toml::table* t = section(root, "gpio")) {

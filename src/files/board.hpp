@@ -11,6 +11,9 @@
 //     projection = "equidistant"
 //     antialias = false
 //     hud = true
+//     palette = "scene"       # scene, colour-blind, high-contrast
+//     large_hud = false       # the HUD's text twice as large
+//     one_button = false      # fire alone plays
 //     threads = 1             # drawing threads (1: the main thread only)
 //     [gpio]
 //     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
@@ -55,6 +58,9 @@ struct Board {
     std::string projection = "equidistant";
     bool antialias = false;
     bool hud = true;
+    std::string palette = "scene";  // render/palette.hpp's names
+    bool large_hud = false;
+    bool one_button = false;  // fire alone plays (docs/accessibility.md)
     int threads = 1;
     // [gpio]
     std::vector<std::string> chips;

@@ -75,7 +75,12 @@ bool body_shown(const B& b, const DrawOptions& o) {
 template <class B>
 Rgb body_color(const B& b, const DrawOptions& o) {
     if (b.desc->grid && o.tint_grids) return o.grid_tint;
-    return {b.desc->color.r, b.desc->color.g, b.desc->color.b};
+    const Rgb own{b.desc->color.r, b.desc->color.g, b.desc->color.b};
+    if (o.palette == Palette::scene) return own;
+    static_assert(static_cast<int>(LineRole::instrument) == static_cast<int>(world::BodyKind::instrument) &&
+                  static_cast<int>(LineRole::grid) == static_cast<int>(world::BodyKind::grid) &&
+                  static_cast<int>(LineRole::ship) == static_cast<int>(world::BodyKind::ship));
+    return palette_line(o.palette, static_cast<LineRole>(b.desc->kind()), own);
 }
 
 }  // namespace noneuclid::render

@@ -1,11 +1,12 @@
 // What a drawn frame shows and how: the projection, the lines' style, the backdrop's colours,
-// which bodies are drawn.
+// which bodies are drawn, the palette.
 #pragma once
 
 #include <cstdint>
 
 #include "geometry/geometry.hpp"
 #include "render/canvas.hpp"
+#include "render/palette.hpp"
 #include "render/raster.hpp"
 
 namespace noneuclid::render {
@@ -23,6 +24,7 @@ struct DrawOptions {
     bool bodies = true;  // draw the other bodies
     bool tint_grids = false;  // draw grid bodies in grid_tint rather than their own colour
     Rgb grid_tint{};
+    Palette palette = Palette::scene;  // the lines' colours (render/palette.hpp; the frame's: set them above)
 };
 
 }  // namespace noneuclid::render

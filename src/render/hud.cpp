@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "render/raster.hpp"
 
@@ -59,12 +60,46 @@ void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, i
     }
 }
 
+// The controls' legend at the bottom, its items (separated by two spaces) wrapped onto as many
+// lines as the width needs, the last line on the bottom margin. (A narrow canvas or a large HUD
+// otherwise cut it off.) No allocation: one line's text at a time in a fixed buffer.
+void draw_legend(const Canvas& c, const Font& font, const char* text, Rgb color, int scale, int margin, int line) {
+    const int room = c.width() - 2 * margin;
+    // Pass 0 counts the lines, pass 1 draws them.
+    int lines = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+        int y = c.height() - margin - font.height * scale - (lines - 1) * line, n = 0;
+        char buf[192];
+        std::size_t len = 0;
+        const char* p = text;
+        while (*p) {
+            const char* end = std::strstr(p, "  ");
+            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
+            char trial[192];
+            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? "  " : "",
+                          static_cast<int>(item), p);
+            if (len && text_width(font, trial, scale) > room) {  // this item starts the next line
+                if (pass == 1) draw_text(c, font, margin, y, buf, color, scale);
+                y += line, ++n;
+                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
+            } else {
+                std::snprintf(buf, sizeof buf, "%s", trial);
+            }
+            len = std::strlen(buf);
+            p += item;
+            while (*p == ' ') ++p;
+        }
+        if (len && pass == 1) draw_text(c, font, margin, y, buf, color, scale);
+        lines = n + 1;
+    }
+}
+
 }  // namespace
 
 const char* curvature_word(double K) { return K > 1e-5 ? "spherical" : (K < -1e-5 ? "hyperbolic" : "flat"); }
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {
-    const int scale = c.height() >= 900 ? 2 : 1;
+    const int scale = (c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
     const int margin = 6 * scale, line = font.height * scale + 2 * scale;
     char text[96];
     // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)
@@ -83,7 +118,7 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
         y += line;
     }
     if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
-    draw_text(c, font, margin, c.height() - margin - font.height * scale, h.controls, dim, scale);
+    draw_legend(c, font, h.controls, dim, scale, margin, line);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 

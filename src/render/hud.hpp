@@ -1,7 +1,7 @@
 // The heads-up display: K with "spherical / flat / hyperbolic", the frame rate, the scene and
-// projection, and a line of controls the caller supplies, in a bitmap font (a PSF console font
-// when the platform found one, the built-in one otherwise). Drawn top-left and bottom-left
-// over the picture. With a game: the score, level and lives top-right (the lives as little
+// projection, and the controls' legend the caller supplies (wrapped to the width), in a bitmap
+// font (a PSF console font when the platform found one, the built-in one otherwise), at twice
+// its size for a large HUD. Drawn top-left and bottom-left over the picture. With a game: the score, level and lives top-right (the lives as little
 // ships), and in the middle the "press fire" screen, the game-over screen with the score, or
 // the new level's number and K. Allocates nothing.
 #pragma once
@@ -29,6 +29,7 @@ struct HudInfo {
     const char* projection = "";
     const char* controls = "";  // the bottom line: the controls' legend, from the app
     const char* note = "";      // a line under the scene's (the earth's zoom: its view in km)
+    bool large = false;         // twice the text's size (docs/accessibility.md)
 };
 
 // "spherical", "flat" or "hyperbolic": the sign of K, flat within half a Q16.16 step of 0.

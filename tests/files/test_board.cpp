@@ -105,6 +105,9 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
         {"[display]\nengine = \"quantum\"\n", "t.toml:2:10", "expected engine = \"fixed\""},
         {"[display]\nprojection = \"mercator\"\n", "t.toml:2:14", "expected projection = \"equidistant\""},
         {"[display]\nfps = 0\n", "t.toml:2:7", "'fps' must be from 1 to 1000"},
+        {"[display]\npalette = \"sepia\"\n", "t.toml:2:11", "expected palette = \"scene\", \"colour-blind\" or \"high-contrast\", found \"sepia\""},
+        {"[display]\nlarge_hud = 2\n", "t.toml:2:13", "large_hud"},
+        {"[display]\none_button = \"yes\"\n", "t.toml:2:14", "one_button"},
         {"[gpio]\nchip = 7\n", "t.toml:2:8", "expected a string or a list of strings for 'chip'"},
         {"[attract]\nidle_seconds = -1\n", "t.toml:2:16", "'idle_seconds' must be from 0"},
         {"display = 3\n", "t.toml:1:11", "expected a [display] table"},
@@ -135,7 +138,8 @@ std::string write_file(const std::string& name, const std::string& text) {
 // Every field of a board, as text, so that two boards compare in one assertion.
 std::string fields(const Board& b) {
     std::string s = b.name + "|" + b.file + "|" + b.device + "|" + std::to_string(b.fps) + "|" + b.scene + "|" + b.engine +
-                    "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" +
+                    "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" + b.palette +
+                    std::to_string(b.large_hud) + std::to_string(b.one_button) + "|" +
                     std::to_string(b.threads) + "|" + std::to_string(b.debounce_ms) + "|" + b.evdev_device + "|" +
                     std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds);
     for (const std::string& m : b.models) s += "|model " + m;

@@ -149,4 +149,43 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
       await page.close();
     }
   });
+
+  await check('?palette=high-contrast&large-hud: a black disc and the HUD twice as tall; a copied link keeps both', async () => {
+    // The share of black pixels (the high-contrast disc's background) and the height of the HUD's first
+    // line of text (the rows with a lit pixel in the left sixth, left of the disc, down to the
+    // first empty one).
+    const measure = (page) => page.evaluate(`(() => {
+      const c = document.querySelector('canvas'), x = c.getContext('2d');
+      const d = x.getImageData(0, 0, c.width, c.height).data, count = new Map();
+      for (let i = 0; i < d.length; i += 4) {
+        const k = d[i] << 16 | d[i + 1] << 8 | d[i + 2];
+        count.set(k, (count.get(k) || 0) + 1);
+      }
+      const black = (count.get(0) || 0) / (c.width * c.height);  // the share of pure black pixels
+      const bg = d[0] << 16 | d[1] << 8 | d[2];  // (the top-left corner: outside the disc)
+      let top = -1, height = 0;
+      for (let y = 0; y < c.height / 2; ++y) {
+        let lit = false;
+        for (let xx = 0; xx < c.width / 6 && !lit; ++xx) lit = (d[(y * c.width + xx) * 4] << 16 | d[(y * c.width + xx) * 4 + 1] << 8 | d[(y * c.width + xx) * 4 + 2]) !== bg;
+        if (lit && top < 0) top = y;
+        if (!lit && top >= 0) { height = y - top; break; }
+      }
+      return {black, height, link: location.href};
+    })()`);
+    const plain = await open('scene=kiosk&hud&size=800x480');
+    expect(plain.started === true, 'the plain page did not start');
+    await waitFrames(plain.page, 3);
+    const a = await measure(plain.page);
+    await plain.page.close();
+    const big = await open('scene=kiosk&hud&size=800x480&palette=high-contrast&large-hud');
+    expect(big.started === true, 'the page with the palette and the large HUD did not start');
+    await waitFrames(big.page, 3);
+    await sleep(1200);  // (the address is rewritten at most twice a second)
+    const b = await measure(big.page);
+    await big.page.close();
+    // The disc (pi 240^2 of 800x480's pixels, 47%, less its lines) is black in high contrast only.
+    expect(a.black < 0.01 && b.black > 0.4, `black pixels: ${a.black.toFixed(3)} plain, ${b.black.toFixed(3)} high-contrast`);
+    expect(a.height > 4 && Math.abs(b.height / a.height - 2) < 0.2, `the HUD's first line: ${a.height} px plain, ${b.height} px large`);
+    expect(b.link.includes('palette=high-contrast') && b.link.includes('large-hud'), `the link ${b.link} lost a setting`);
+  });
 }

@@ -9,7 +9,7 @@
   const canvas = $('screen');
   const context = canvas.getContext('2d');
   const params = new URLSearchParams(location.search);
-  const FLAGS = new Set(['aa', 'hud', 'stats']);  // `aa`, `aa=on` or `aa=off`
+  const FLAGS = new Set(['aa', 'hud', 'stats', 'large-hud', 'one-button']);  // `aa`, `aa=on` or `aa=off`
   const TOUCH = [['thrust', '▲ thrust'], ['left', '◀ left'], ['right', 'right ▶'], ['curvature_down', 'K −'],
                  ['curvature_up', 'K +'], ['preset', 'preset K'], ['fire', 'fire']];
 
