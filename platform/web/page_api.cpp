@@ -192,6 +192,12 @@ EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
 // 1 when the run's scene has the game (fire starts it and fires): the page shows the fire
 // button and mentions Space only then.
 EMSCRIPTEN_KEEPALIVE int nw_has_game() { return g_run && g_run->live.scene.game.on ? 1 : 0; }
+// The page's space changed (a turned phone, full screen): the canvas is width x height pixels
+// from the next frame on, and the recording says so, as a resized window's does.
+EMSCRIPTEN_KEEPALIVE void nw_resize(int width, int height) {
+    if (noneuclid::web::running() && width >= 16 && height >= 16 && width <= 8192 && height <= 8192)
+        g_run->display->resize(width, height);
+}
 EMSCRIPTEN_KEEPALIVE int nw_width() { return g_run ? g_run->display->canvas().width() : 0; }
 EMSCRIPTEN_KEEPALIVE int nw_height() { return g_run ? g_run->display->canvas().height() : 0; }
 

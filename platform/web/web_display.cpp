@@ -15,10 +15,14 @@ EM_JS(int, nw_js_read_back, (uint8_t* rgba, int width, int height), {
 
 namespace noneuclid::web {
 
-WebDisplay::WebDisplay(int width, int height, render::PixelFormat format) {
+WebDisplay::WebDisplay(int width, int height, render::PixelFormat format) : format_(format) { resize(width, height); }
+
+void WebDisplay::resize(int width, int height) {
+    const render::PixelFormat format = format_;
     const render::PixelFormat rgba = render::PixelFormat::rgba8888();
     const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     rgba_.assign(pixels * 4, 0);
+    drawn_.clear();
     if (format.byte_channels()) {
         canvas_ = render::Canvas(rgba_.data(), width, height, std::ptrdiff_t{width} * 4, rgba);
         return;

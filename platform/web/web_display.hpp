@@ -18,6 +18,9 @@ public:
     // word (xrgb8888 gives the same pixels as RGBA8888), else drawn in `format` and converted
     // for the page as it is shown, so that every format shows the pixels `render` writes.
     WebDisplay(int width, int height, render::PixelFormat format);
+    // From the page: the canvas is width x height pixels from the next frame on (the page's space
+    // changed: a turned phone, full screen). Allocates, once per change, as a window's resize does.
+    void resize(int width, int height);
 
     render::Canvas canvas() override { return canvas_; }
     void present() override;
@@ -38,6 +41,7 @@ private:
 
     std::vector<uint8_t> rgba_;   // what the page's canvas gets: R, G, B, A bytes
     std::vector<uint8_t> drawn_;  // the frame in the asked-for format, when that is not RGBA's
+    render::PixelFormat format_;
     render::Canvas canvas_;
     world::InputEvent queue_[kQueue];
     int queued_ = 0;

@@ -181,6 +181,10 @@ const OptionRow kOptions[] = {
      [](Args&, const std::string&, Options& o, Command) { o.large_hud = true; }},
     {"--no-large-hud", "", kPicture, "the HUD's text at its usual size (the default)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.large_hud = false; }},
+    {"--hud-scale", "N", kPicture,
+     "the HUD's text size, N pixels per font pixel, 1 to 8 (default: 2 on a canvas 900 pixels tall or more, "
+     "else 1; the web page sets it from the screen's pixel density)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.hud_scale = static_cast<int>(a.count(opt, 1, 8)); }},
     {"--one-button", "", kRun, "fire alone plays: the ship turns by itself, hold fire to thrust, tap to fire (or, "
      "without the game, for the next K); docs/accessibility.md", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},

@@ -54,6 +54,7 @@ struct Options {
     bool hud = false;           // run: true
     render::Palette palette = render::Palette::scene;  // the colours (docs/accessibility.md)
     bool large_hud = false;     // the HUD's text twice as large
+    int hud_scale = 0;          // the HUD's pixels per font pixel; 0: 2 on a canvas 900 tall or more, else 1
     bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)

@@ -136,6 +136,7 @@ public:
         char note[80];
         if (zoom_note(note, sizeof note)) info.note = note;
         info.large = options_.large_hud;
+        info.scale = options_.hud_scale;
         const render::PaletteFrame colours = render::palette_frame(options_.draw.palette);
         render::draw_hud(c, font_, info, colours.text, colours.dim);
     }

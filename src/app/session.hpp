@@ -29,6 +29,7 @@ struct SessionOptions {
     render::DrawOptions draw;
     bool hud = true;
     bool large_hud = false;       // the HUD's text twice as large
+    int hud_scale = 0;            // the HUD's text size (render::HudInfo::scale; 0: by the canvas)
     bool one_button = false;      // fire alone plays (app/one_button.hpp)
     bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
     std::string scene_name;

@@ -69,6 +69,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     rec.setting("hud", o.hud ? "on" : "off");
     if (o.palette != render::Palette::scene) rec.setting("palette", render::palette_name(o.palette));
     if (o.large_hud) rec.setting("large-hud", "on");
+    if (o.hud_scale > 0) rec.setting("hud-scale", std::to_string(o.hud_scale));
     rec.setting("legend", o.legend.empty() ? "buttons" : o.legend);
     rec.setting("font", font_setting(font));
     for (const render::PixelFormat& f : render::kNamedFormats)
@@ -117,6 +118,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.draw.line_width = static_cast<int32_t>(o.line_width * render::kSub + 0.5);
     so.hud = o.hud;
     so.large_hud = o.large_hud;
+    so.hud_scale = o.hud_scale;
     so.one_button = o.one_button;
     so.draw.palette = o.palette;
     const render::PaletteFrame frame = render::palette_frame(o.palette);

@@ -99,7 +99,7 @@ void draw_legend(const Canvas& c, const Font& font, const char* text, Rgb color,
 const char* curvature_word(double K) { return K > 1e-5 ? "spherical" : (K < -1e-5 ? "hyperbolic" : "flat"); }
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {
-    const int scale = (c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
+    const int scale = (h.scale > 0 ? h.scale : c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
     const int margin = 6 * scale, line = font.height * scale + 2 * scale;
     char text[96];
     // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)

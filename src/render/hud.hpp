@@ -30,6 +30,7 @@ struct HudInfo {
     const char* controls = "";  // the bottom line: the controls' legend, from the app
     const char* note = "";      // a line under the scene's (the earth's zoom: its view in km)
     bool large = false;         // twice the text's size (docs/accessibility.md)
+    int scale = 0;              // pixels per font pixel (0: 2 on a canvas 900 tall or more, else 1)
 };
 
 // "spherical", "flat" or "hyperbolic": the sign of K, flat within half a Q16.16 step of 0.

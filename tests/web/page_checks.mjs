@@ -55,9 +55,9 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     // line (src/render/font.cpp); a canvas pixel is the canvas's CSS height over its pixels.
     const m = await page.evaluate(`(() => {
       const c = document.getElementById('screen');
-      return {css: c.getBoundingClientRect().height, pixels: c.height};
+      return {css: c.getBoundingClientRect().height, pixels: c.height, scale: window.noneuclid.state().hudScale};
     })()`);
-    const text = 8 * m.css / m.pixels;
+    const text = 8 * m.scale * m.css / m.pixels;  // (the page sets --hud-scale from the pixel density)
     expect(text >= 9, `the HUD text is ${text.toFixed(2)} CSS px tall (canvas ${m.pixels} px shown ${m.css} CSS px tall)`);
     await page.close();
   });
@@ -187,5 +187,49 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     expect(a.black < 0.01 && b.black > 0.4, `black pixels: ${a.black.toFixed(3)} plain, ${b.black.toFixed(3)} high-contrast`);
     expect(a.height > 4 && Math.abs(b.height / a.height - 2) < 0.2, `the HUD's first line: ${a.height} px plain, ${b.height} px large`);
     expect(b.link.includes('palette=high-contrast') && b.link.includes('large-hud'), `the link ${b.link} lost a setting`);
+  });
+
+  await check('844x390 at 3x: the canvas has the screen\'s own pixels; turned to 390x844 the run follows without restarting', async () => {
+    const {page, started} = await open('scene=kiosk', {width: 844, height: 390, dpr: 3});
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    await page.key('keyDown', '1', 'Digit1', 49);
+    await waitFrames(page, 2);
+    await page.key('keyUp', '1', 'Digit1', 49);
+    const look = () => page.evaluate(`(() => {
+      const c = document.getElementById('screen'), s = window.noneuclid.state();
+      return {css: c.getBoundingClientRect().width, pixels: s.pixels, frame: s.frame, K: s.K};
+    })()`);
+    const a = await look();
+    // Sharp: a canvas pixel per device pixel (the width rounded down to 10 pixels, at most 1600).
+    const ratio = (m) => m.pixels[0] / (Math.min(1600, m.css * 3));
+    expect(ratio(a) > 0.97 && ratio(a) <= 1.01, `the canvas is ${a.pixels} pixels shown ${a.css.toFixed(1)} CSS px wide at 3x`);
+    await page.send('Emulation.setDeviceMetricsOverride', {width: 390, height: 844, deviceScaleFactor: 3, mobile: true});
+    await sleep(600);
+    await waitFrames(page, 3);
+    const b = await look();
+    expect(b.pixels[0] !== a.pixels[0] && ratio(b) > 0.97 && ratio(b) <= 1.01,
+           `turned: the canvas is ${b.pixels} pixels shown ${b.css.toFixed(1)} CSS px wide (was ${a.pixels})`);
+    expect(b.frame > a.frame && Math.abs(b.K + 1) < 1e-6, `the run restarted: frame ${a.frame} -> ${b.frame}, K ${b.K}`);
+    await page.close();
+  });
+
+  await check('the full-screen button puts the page in full screen and back', async () => {
+    const {page, started} = await open('scene=kiosk');
+    expect(started === true, 'the page did not start');
+    const click = async () => {
+      const r = await page.evaluate(`(() => { const b = document.getElementById('fullscreen').getBoundingClientRect();
+                                             return {x: b.x + b.width / 2, y: b.y + b.height / 2}; })()`);
+      for (const type of ['mousePressed', 'mouseReleased'])
+        await page.send('Input.dispatchMouseEvent', {type, x: r.x, y: r.y, button: 'left', clickCount: 1});
+      await sleep(300);
+      return page.evaluate(`({full: !!document.fullscreenElement, text: document.getElementById('fullscreen').textContent,
+                              shown: !document.getElementById('fullscreen').hidden})`);
+    };
+    const on = await click();
+    expect(on.shown && on.full && on.text === 'leave full screen', `after a click: ${JSON.stringify(on)}`);
+    const off = await click();
+    expect(!off.full && off.text === 'full screen', `after a second click: ${JSON.stringify(off)}`);
+    await page.close();
   });
 }

@@ -33,6 +33,10 @@
   // ---- the engine's display: frames in, pixels out ------------------------------------------
   function present(pointer, width, height) {
     const t0 = performance.now();
+    if (canvas.width !== width || canvas.height !== height) {  // (the run was resized)
+      canvas.width = width, canvas.height = height;
+      fit();
+    }
     const buffer = mod.HEAPU8.buffer;  // a new one when the memory grows
     if (!image || image.buffer !== buffer || image.pointer !== pointer || image.data.width !== width ||
         image.data.height !== height) {
@@ -263,14 +267,32 @@
     canvas.style.width = Math.floor(canvas.width * scale) + 'px';
     canvas.style.height = Math.floor(canvas.height * scale) + 'px';
   }
-  // The run's size when the address gives none: the world's 5:3 at most 800x480, small enough
-  // that a canvas pixel covers at least 9/8 CSS pixels, so that the HUD's 8-pixel text is at
-  // least 9 CSS pixels tall on a phone.
-  function defaultSize() {
+  // The run's size when the address gives none: the world's 5:3 as large as #stage allows, in
+  // the screen's own pixels (CSS pixels times devicePixelRatio, so that a high-density screen
+  // shows it sharp; at most 1600 wide), and the HUD's scale that makes its 8-pixel text at least
+  // 9 CSS pixels tall.
+  function pageSize() {
     const stage = $('stage');
-    const fits = Math.min(stage.clientWidth, stage.clientHeight * 5 / 3) * 8 / 9;
-    const width = Math.max(240, Math.min(800, Math.floor(fits / 10) * 10));
-    return `${width}x${width * 3 / 5}`;
+    const css = Math.max(240, Math.min(stage.clientWidth, stage.clientHeight * 5 / 3));
+    const width = Math.max(240, Math.min(1600, Math.floor(css * (window.devicePixelRatio || 1) / 10) * 10));
+    return {width, height: width * 3 / 5, hudScale: Math.max(1, Math.min(8, Math.ceil(9 * width / (8 * css))))};
+  }
+  let sizeChosen = false;  // the page chose the run's size (the address gave none): it follows #stage
+  function defaultSize() {
+    const s = pageSize();
+    sizeChosen = true;
+    return [`${s.width}x${s.height}`, '--hud-scale', String(s.hudScale)];
+  }
+  // #stage changed (a turned phone, full screen, a resized window): the run's canvas follows.
+  let resizeDue = null;
+  function followStage() {
+    fit();
+    if (!sizeChosen || !running) return;
+    clearTimeout(resizeDue);
+    resizeDue = setTimeout(() => {
+      const s = pageSize();
+      if (running && (s.width !== canvas.width || s.height !== canvas.height)) mod._nw_resize(s.width, s.height);
+    }, 150);
   }
 
   // The K slider steers K to its value by holding curvature up or down, as a visitor holding the
@@ -296,7 +318,16 @@
   function wireControls() {
     window.addEventListener('keydown', (e) => onKey(e, true));
     window.addEventListener('keyup', (e) => onKey(e, false));
-    new ResizeObserver(fit).observe($('stage'));
+    new ResizeObserver(followStage).observe($('stage'));
+    const full = $('fullscreen');
+    full.hidden = !document.fullscreenEnabled;
+    full.addEventListener('click', () => {
+      if (document.fullscreenElement) document.exitFullscreen();
+      else document.documentElement.requestFullscreen().catch((e) => say(`full screen was refused: ${e.message}`));
+    });
+    document.addEventListener('fullscreenchange', () => {
+      full.textContent = document.fullscreenElement ? 'leave full screen' : 'full screen';
+    });
     window.addEventListener('blur', () => {
       for (const c of keysHeld.values()) input(c, false);
       keysHeld.clear();
@@ -349,6 +380,7 @@
     ready,  // resolves once the first run has started (true) or could not (false)
     state: () => ({
       running, frame: mod ? mod._nw_frame() : 0, K: mod ? mod._nw_curvature() : 0,
+      pixels: [canvas.width, canvas.height], hudScale: sizeChosen ? pageSize().hudScale : 1,
       message: $('message').hidden ? '' : $('message').textContent,
     }),
     // Resolves when the run has ended: stop() ends it after the frame being drawn.
@@ -385,17 +417,17 @@
     wireControls();
     try {
       startWords = await wordsOfUrl();
-      if (!params.has('size') && !params.has('actions')) startWords.push('--size', defaultSize());
+      if (!params.has('size') && !params.has('actions')) startWords.push('--size', ...defaultSize());
     } catch (e) {
       say(e.message);
       $('status').textContent = 'not running';
-      startWords = ['--size', defaultSize()];  // said once: the menus start runs without the address
+      startWords = ['--size', ...defaultSize()];  // said once: the menus start runs without the address
       readyResolve(false);
       return;
     }
     const started = start(startWords);
     // A bad address is said once: the menus then start runs without its words.
-    if (!started) startWords = ['--size', defaultSize()];
+    if (!started) startWords = ['--size', ...defaultSize()];
     readyResolve(started);
     canvas.focus();
   });
