@@ -8,6 +8,7 @@
 #include "app/commands.hpp"
 #include "app/displays.hpp"
 #include "app/run.hpp"
+#include "app/lesson.hpp"
 #include "app/setup.hpp"
 
 namespace noneuclid::app {
@@ -30,27 +31,34 @@ const DisplayRow& display_for(const Options& given) {
     return *row;
 }
 
-}  // namespace
-
-int run_command(int argc, char** argv, int first) {
+// What `run` and a lesson share: the options layered (the board's on the kiosk), the display
+// chosen and, for the headless one, its defaults. The display is opened by the caller, once the
+// scene is known to load.
+struct RunSetup {
+    const DisplayRow* shown = nullptr;
+    files::Board board;
+    Script script;
+    Options o;
+    bool size_given = false;  // --size on the command line
+};
+void set_up_run(int argc, char** argv, int first, RunSetup& r) {
     Options given = defaults(Command::run);
     {
         Args args(argc, argv, first);
         parse_options(args, given, Command::run);
     }
     check_outputs(given);  // --record and --screenshot come from the command line only
-    const DisplayRow& shown = display_for(given);
-    files::Board board;
-    if (shown.kiosk) {
+    r.shown = &display_for(given);
+    if (r.shown->kiosk) {
         std::string note, error;
-        if (!platform::find_board(given.board, board, note, error)) usage_error(error + ".");
+        if (!platform::find_board(given.board, r.board, note, error)) usage_error(error + ".");
         std::fprintf(stderr, "noneuclid: %s.\n", note.c_str());
     } else if (!given.board.empty() || given.input != "auto") {
         usage_error("--board and --input are the kiosk's buttons: add --display fbdev.");
     }
-    Script script;
-    Options o = layered_options(argc, argv, first, Command::run, script, shown.kiosk ? &board : nullptr);
-    if (shown.kind == platform::DisplayKind::png) {
+    r.o = layered_options(argc, argv, first, Command::run, r.script, r.shown->kiosk ? &r.board : nullptr);
+    Options& o = r.o;
+    if (r.shown->kind == platform::DisplayKind::png) {
         if (o.frames == 0) o.frames = 600;  // ten seconds of world time: nobody is there to close it
         if (!o.attract_given) o.attract = 1;  // nor at the keys: the autopilot flies
         if (o.screenshot.empty()) o.screenshot = "out/run.png";
@@ -58,6 +66,45 @@ int run_command(int argc, char** argv, int first) {
         const std::filesystem::path dir = std::filesystem::path(o.screenshot).parent_path();
         if (!dir.empty()) std::filesystem::create_directories(dir, ec);
     }
+    r.size_given = given.size_given;
+}
+
+}  // namespace
+
+int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first) {
+    RunSetup r;
+    set_up_run(argc, argv, first, r);
+    {
+        LiveRun check;  // every step's scene loads before the display opens: a bad one is said first
+        for (std::size_t i = 0; i < lesson.steps.size(); ++i)
+            if (!lesson.steps[i].scene.empty()) {
+                Options s = r.o;
+                s.scene = lesson.steps[i].scene;
+                prepare_run(check, s);
+            }
+    }
+    std::string error;
+    std::unique_ptr<Display> display = r.shown->open(r.o, r.board, error);
+    if (!display) {
+        std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+        return 2;
+    }
+    LessonPlayer player(lesson, r.o, *display, r.shown->name);
+    while (player.tick()) {
+    }
+    const int status = player.finish();
+    display.reset();
+    return status;
+}
+
+int run_command(int argc, char** argv, int first) {
+    RunSetup r;
+    set_up_run(argc, argv, first, r);
+    const DisplayRow& shown = *r.shown;
+    files::Board& board = r.board;
+    Script& script = r.script;
+    Options& o = r.o;
+    const bool size_given = r.size_given;
     LiveRun run;
     prepare_run(run, o);
 
@@ -67,7 +114,7 @@ int run_command(int argc, char** argv, int first) {
         std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
         return 2;
     }
-    if (shown.kiosk && given.size_given)
+    if (shown.kiosk && size_given)
         std::fprintf(stderr, "noneuclid: --size is left unused: the kiosk draws at the framebuffer's size, %dx%d.\n",
                      display->canvas().width(), display->canvas().height());
 

@@ -25,6 +25,10 @@ const CommandRow kCommands[kCommandCount] = {
      "an instrument's readings at one curvature as one JSON object: triangle (angles, excess, area), circle "
      "(circumference and area against the flat ones), parallels (how far apart), polygon (the gap, the closing K)",
      "triangle|circle|parallels|polygon [OPTIONS]", measure_command},
+    {Command::lesson, "lesson",
+     "the lessons listed; a lesson (built-in or a file) played step by step on run's display with run's options, "
+     "or --worksheet FILE.png: its printable page; --print: a built-in lesson's file",
+     "[NAME|FILE [--worksheet FILE.png | --print] [run's OPTIONS]]", lesson_command},
 };
 
 const char* command_name(Command c) { return kCommands[static_cast<int>(c)].name; }

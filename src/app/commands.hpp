@@ -17,6 +17,7 @@ int buttons_command(int argc, char** argv, int first);
 int scores_command(int argc, char** argv, int first);
 int scenes_command(int argc, char** argv, int first);
 int measure_command(int argc, char** argv, int first);
+int lesson_command(int argc, char** argv, int first);
 
 struct CommandRow {
     Command command;

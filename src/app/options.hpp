@@ -20,8 +20,8 @@
 namespace noneuclid::app {
 
 // The commands (app/main.cpp's table has what each does).
-enum class Command { run, render, dump, demo, accuracy, buttons, scores, scenes, measure };
-inline constexpr int kCommandCount = 9;
+enum class Command { run, render, dump, demo, accuracy, buttons, scores, scenes, measure, lesson };
+inline constexpr int kCommandCount = 10;
 
 // `noneuclid measure`: the instrument and its construction (docs/measure.md). Lengths in world
 // units, angles in radians (degrees on the command line).
@@ -55,6 +55,7 @@ struct Options {
     render::Palette palette = render::Palette::scene;  // the colours (docs/accessibility.md)
     bool large_hud = false;     // the HUD's text twice as large
     int hud_scale = 0;          // the HUD's pixels per font pixel; 0: 2 on a canvas 900 tall or more, else 1
+    std::string caption;        // a lesson step's caption on the HUD (app/lesson.hpp; no option sets it)
     bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)

@@ -137,6 +137,7 @@ public:
         if (zoom_note(note, sizeof note)) info.note = note;
         info.large = options_.large_hud;
         info.scale = options_.hud_scale;
+        info.caption = options_.caption.c_str();
         const render::PaletteFrame colours = render::palette_frame(options_.draw.palette);
         render::draw_hud(c, font_, info, colours.text, colours.dim);
     }
@@ -150,6 +151,8 @@ public:
     double time() const override { return world_.time; }
     long frame() const override { return world_.frame; }
     double curvature() const override { return static_cast<double>(world_.K); }
+    long score() const override { return world_.game().score; }
+    long fire_presses() const override { return fire_presses_; }
     bool quit() const override { return quit_; }
     void set_fps(double fps) override { fps_ = fps; }
     const SessionOptions& options() const override { return options_; }
@@ -157,6 +160,7 @@ public:
 private:
     static constexpr int kQueue = 64;
     OneButton one_button_;
+    long fire_presses_ = 0;
 
     // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
     // zoom ends, that it ends there (docs/earth.md).
@@ -183,6 +187,7 @@ private:
             for (int i = 0; i < n; ++i) apply(ap[i]);
         }
         user_held_[static_cast<int>(e.control)] = e.pressed;
+        if (e.control == world::Control::fire && e.pressed) ++fire_presses_;
         if (options_.one_button && e.control == world::Control::fire) {  // (app/one_button.hpp)
             world::InputEvent out[2];
             const int n = one_button_.fire(e.pressed, world_.time, world_.game().on(), out);

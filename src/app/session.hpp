@@ -30,6 +30,7 @@ struct SessionOptions {
     bool hud = true;
     bool large_hud = false;       // the HUD's text twice as large
     int hud_scale = 0;            // the HUD's text size (render::HudInfo::scale; 0: by the canvas)
+    std::string caption;          // a lesson step's caption on the HUD (app/lesson.hpp)
     bool one_button = false;      // fire alone plays (app/one_button.hpp)
     bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
     std::string scene_name;
@@ -93,6 +94,8 @@ public:
     virtual double time() const = 0;       // world seconds so far
     virtual long frame() const = 0;        // steps taken
     virtual double curvature() const = 0;  // K now
+    virtual long score() const = 0;        // the game's score now (0 without the game)
+    virtual long fire_presses() const = 0; // presses of fire so far (a lesson's "press fire to go on")
     virtual bool quit() const = 0;         // a quit control came
     virtual void set_fps(double fps) = 0;  // shown by the HUD with show_fps
     virtual const SessionOptions& options() const = 0;  // as now (P and H change them)

@@ -60,23 +60,25 @@ void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, i
     }
 }
 
-// The controls' legend at the bottom, its items (separated by two spaces) wrapped onto as many
-// lines as the width needs, the last line on the bottom margin. (A narrow canvas or a large HUD
-// otherwise cut it off.) No allocation: one line's text at a time in a fixed buffer.
-void draw_legend(const Canvas& c, const Font& font, const char* text, Rgb color, int scale, int margin, int line) {
+// `text` wrapped to the width at its separators (`sep`: the legend's items are two spaces
+// apart, a caption's words one), its last line's top at `bottom`; returns its lines. (A narrow
+// canvas or a large HUD otherwise cut the legend off.) No allocation: one line at a time in a
+// fixed buffer; pass 0 counts the lines, pass 1 draws them.
+int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale,
+                 int margin, int line, int bottom) {
     const int room = c.width() - 2 * margin;
-    // Pass 0 counts the lines, pass 1 draws them.
+    const std::size_t sep_len = std::strlen(sep);
     int lines = 0;
     for (int pass = 0; pass < 2; ++pass) {
-        int y = c.height() - margin - font.height * scale - (lines - 1) * line, n = 0;
-        char buf[192];
+        int y = bottom - (lines - 1) * line, n = 0;
+        char buf[512];
         std::size_t len = 0;
         const char* p = text;
         while (*p) {
-            const char* end = std::strstr(p, "  ");
+            const char* end = std::strstr(p, sep);
             const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
-            char trial[192];
-            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? "  " : "",
+            char trial[512];
+            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
                           static_cast<int>(item), p);
             if (len && text_width(font, trial, scale) > room) {  // this item starts the next line
                 if (pass == 1) draw_text(c, font, margin, y, buf, color, scale);
@@ -87,11 +89,13 @@ void draw_legend(const Canvas& c, const Font& font, const char* text, Rgb color,
             }
             len = std::strlen(buf);
             p += item;
+            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
             while (*p == ' ') ++p;
         }
         if (len && pass == 1) draw_text(c, font, margin, y, buf, color, scale);
-        lines = n + 1;
+        lines = len ? n + 1 : n;
     }
+    return lines;
 }
 
 }  // namespace
@@ -118,7 +122,9 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
         y += line;
     }
     if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
-    draw_legend(c, font, h.controls, dim, scale, margin, line);
+    const int bottom = c.height() - margin - font.height * scale;
+    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, line, bottom);
+    if (h.caption[0]) draw_wrapped(c, font, h.caption, " ", color, scale, margin, line, bottom - legend * line - line / 2);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 

@@ -31,6 +31,7 @@ struct HudInfo {
     const char* note = "";      // a line under the scene's (the earth's zoom: its view in km)
     bool large = false;         // twice the text's size (docs/accessibility.md)
     int scale = 0;              // pixels per font pixel (0: 2 on a canvas 900 tall or more, else 1)
+    const char* caption = "";   // a lesson step's caption: wrapped above the legend, in the text's colour
 };
 
 // "spherical", "flat" or "hyperbolic": the sign of K, flat within half a Q16.16 step of 0.

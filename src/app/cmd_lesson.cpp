@@ -1,0 +1,86 @@
+// `noneuclid lesson`: the built-in lessons listed; `noneuclid lesson NAME|FILE` plays one on
+// run's display (app/lesson.hpp) with run's options; `--worksheet FILE.png` writes its printable
+// page instead, and `--print` the lesson's own file text (a built-in's, to copy and change).
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/displays.hpp"
+#include "app/lesson.hpp"
+#include "app/setup.hpp"
+#include "world/quote.hpp"
+
+namespace noneuclid::app {
+
+namespace {
+
+files::Lesson load_lesson(const std::string& name) {
+    files::Lesson lesson;
+    if (files::builtin_lesson(name, lesson)) return lesson;
+    const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
+    if (!file)
+        usage_error("there is no built-in lesson '" + world::printable(name) + "': the lessons are " +
+                    world::or_list(files::builtin_lesson_names()) + ", or name a lesson file (.toml).");
+    files::SceneError e;
+    if (!files::load_lesson_file(name, lesson, e)) usage_error(e.to_string() + ".");
+    return lesson;
+}
+
+}  // namespace
+
+int lesson_command(int argc, char** argv, int first) {
+    if (first >= argc || argv[first][0] == '-') {
+        if (first < argc) usage_error("lesson takes a lesson's name first (or nothing, for the list), not '" +
+                                      world::printable(argv[first]) + "'.");
+        for (const std::string& name : files::builtin_lesson_names()) {
+            files::Lesson l;
+            files::builtin_lesson(name, l);
+            std::printf("%-10s  %s: %s (%zu steps)\n", name.c_str(), l.title.c_str(), l.about.c_str(), l.steps.size());
+        }
+        return 0;
+    }
+    const files::Lesson lesson = load_lesson(argv[first]);
+    // --worksheet FILE and --print are the lesson's own; the rest are run's.
+    std::string worksheet;
+    bool print = false;
+    std::vector<char*> rest = {argv[0]};
+    for (int i = first + 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--worksheet") == 0) {
+            if (i + 1 >= argc) usage_error("--worksheet needs a file name: --worksheet lesson.png.");
+            worksheet = argv[++i];
+        } else if (std::strcmp(argv[i], "--print") == 0) {
+            print = true;
+        } else {
+            rest.push_back(argv[i]);
+        }
+    }
+    if (print) {
+        const char* text = files::builtin_lesson_text(argv[first]);
+        if (!text) usage_error("--print writes a built-in lesson's file: '" + world::printable(argv[first]) + "' is a file already.");
+        std::fputs(text, stdout);
+        return 0;
+    }
+    Options base = defaults(Command::run);
+    {
+        Args args(static_cast<int>(rest.size()), rest.data(), 1);
+        parse_options(args, base, Command::run);
+    }
+    if (!base.record.empty()) usage_error("--record keeps one scene's run: a lesson's steps are not recorded (record a step with run --scene).");
+    if (!worksheet.empty()) {
+        std::string error;
+        if (!platform::output_allowed(worksheet, error)) usage_error("--worksheet: " + error);
+        if (!write_worksheet(lesson, base, worksheet, error)) {
+            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+            return 1;
+        }
+        std::fprintf(stderr, "noneuclid: wrote %s (the worksheet of '%s', %zu steps).\n", worksheet.c_str(),
+                     lesson.title.c_str(), lesson.steps.size());
+        return 0;
+    }
+    // Played on run's display: the same choice and the same options as `noneuclid run`.
+    return play_lesson(lesson, static_cast<int>(rest.size()), rest.data(), 1);
+}
+
+}  // namespace noneuclid::app

@@ -1,0 +1,149 @@
+// Lessons played and printed (app/lesson.hpp).
+#include "app/lesson.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "app/picture.hpp"
+#include "app/platform.hpp"
+#include "app/setup.hpp"
+#include "render/font.hpp"
+#include "world/quote.hpp"
+
+namespace noneuclid::app {
+
+namespace {
+
+// How long a step without seconds and with nobody watching (the headless display) plays: the
+// run's own default for that display, ten seconds.
+constexpr long kUnwatchedFrames = 600;
+
+// The options of step `i`: the base's, then every earlier step's scene and projection carried
+// on, then this step's.
+Options step_options(const files::Lesson& lesson, const Options& base, int i) {
+    Options o = base;
+    if (o.scene.empty()) o.scene = "kiosk";
+    for (int k = 0; k <= i; ++k) {
+        const files::LessonStep& s = lesson.steps[k];
+        if (!s.scene.empty()) o.scene = s.scene;
+        if (!s.projection.empty()) o.projection = parse_projection("the lesson's projection", s.projection);
+    }
+    const files::LessonStep& s = lesson.steps[i];
+    o.has_curvature = s.has_curvature;
+    if (s.has_curvature) o.curvature = s.curvature;
+    return o;
+}
+
+}  // namespace
+
+LessonPlayer::LessonPlayer(const files::Lesson& lesson, const Options& base, Display& display, const char* name)
+    : lesson_(lesson), base_(base), display_(display), display_name_(name) {
+    start(0);
+}
+
+void LessonPlayer::start(int i) {
+    step_ = i;
+    step_options_ = step_options(lesson_, base_, i);
+    Options& o = step_options_;
+    const files::LessonStep& s = lesson_.steps[i];
+    const long seconds_frames = static_cast<long>(s.seconds * 60 + 0.5);
+    o.frames = seconds_frames > 0 ? seconds_frames : (display_.realtime() ? 0 : kUnwatchedFrames);
+    if (!display_.realtime() && base_.frames > 0) o.frames = std::min(o.frames > 0 ? o.frames : base_.frames, base_.frames);
+    // The caption, and where the lesson is: "2/4".
+    caption_ = std::to_string(i + 1) + "/" + std::to_string(lesson_.steps.size()) + "  " + s.caption;
+    if (s.done.kind != files::LessonDone::fire || s.seconds == 0) caption_ += "  (" + files::lesson_done_words(s.done) + ")";
+    if (i + 1 < static_cast<int>(lesson_.steps.size())) o.screenshot.clear();  // the last step's picture only
+    o.caption = caption_;
+    prepare_run(run_, o);
+    compose_run(run_, o, script_, display_, display_name_, nullptr, nullptr);
+    fire_seen_ = run_.session->fire_presses();
+}
+
+bool LessonPlayer::step_done() const {
+    const files::LessonDone& d = lesson_.steps[step_].done;
+    const Session& s = *run_.session;
+    switch (d.kind) {
+        case files::LessonDone::fire: return s.fire_presses() > fire_seen_;
+        case files::LessonDone::curvature_above: return s.curvature() > d.value;
+        case files::LessonDone::curvature_below: return s.curvature() < d.value;
+        case files::LessonDone::score: return static_cast<double>(s.score()) >= d.value;
+    }
+    return false;
+}
+
+bool LessonPlayer::tick() {
+    if (over_) return false;
+    const bool going = run_.loop->tick();
+    if (going && !step_done()) return true;
+    const bool closed = display_.closing() || run_.session->quit();
+    status_ = run_.loop->finish();
+    if (!going && closed) return over_ = true, false;  // the display closed, or quit: the lesson ends
+    if (status_ != 0 || step_ + 1 >= static_cast<int>(lesson_.steps.size())) return over_ = true, false;
+    start(step_ + 1);  // done, or its time ran out: the next step
+    return true;
+}
+
+int LessonPlayer::finish() { return status_; }
+
+namespace {
+
+// Text at (x, y) wrapped to `width` pixels at word boundaries; returns the y below it.
+int paragraph(const render::Canvas& c, const render::Font& font, int x, int y, int width, const std::string& text,
+              render::Rgb color, int scale) {
+    const int line = (font.height + 3) * scale;
+    std::string cur;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        std::size_t end = text.find(' ', at);
+        if (end == std::string::npos) end = text.size();
+        const std::string word = text.substr(at, end - at);
+        const std::string trial = cur.empty() ? word : cur + " " + word;
+        if (!cur.empty() && render::text_width(font, trial, scale) > width) {
+            render::draw_text(c, font, x, y, cur, color, scale);
+            y += line, cur = word;
+        } else {
+            cur = trial;
+        }
+        at = end + 1;
+    }
+    if (!cur.empty()) render::draw_text(c, font, x, y, cur, color, scale), y += line;
+    return y;
+}
+
+}  // namespace
+
+bool write_worksheet(const files::Lesson& lesson, const Options& base, const std::string& path, std::string& error) {
+    constexpr int kWidth = 1240, kMargin = 60, kPanelW = 480, kPanelH = 288, kRow = 340, kTop = 190;
+    const render::Font& font = render::builtin_font();
+    const render::PixelFormat fmt = render::PixelFormat::xrgb8888();
+    const int height = kTop + kRow * static_cast<int>(lesson.steps.size()) + kMargin;
+    std::vector<uint8_t> pixels(static_cast<std::size_t>(kWidth) * height * 4, 0xFF);  // white paper
+    const render::Canvas page(pixels.data(), kWidth, height, std::ptrdiff_t{kWidth} * 4, fmt);
+    const render::Rgb ink{20, 20, 20}, grey{90, 90, 90};
+    render::draw_text(page, font, kMargin, kMargin, lesson.title, ink, 4);
+    paragraph(page, font, kMargin, kMargin + 50, kWidth - 2 * kMargin, lesson.about, grey, 2);
+    for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i) {
+        const files::LessonStep& s = lesson.steps[i];
+        Options o = step_options(lesson, base, i);
+        o.width = kPanelW, o.height = kPanelH, o.frames = 60, o.hud = false, o.format = fmt;
+        Picture picture;
+        const PictureResult r = render_picture(o, load_scene(o), nullptr, font, picture);
+        if (r.stopped) return error = "stopped by a signal: the worksheet was not written.", false;
+        const int y0 = kTop + kRow * i;
+        for (int y = 0; y < kPanelH; ++y)
+            for (int x = 0; x < kPanelW; ++x) page.set(kMargin + x, y0 + y, picture.canvas.get(x, y));
+        const int tx = kMargin + kPanelW + 30, tw = kWidth - tx - kMargin;
+        char head[96];
+        std::snprintf(head, sizeof head, "%d. K = %+.2f, %s", i + 1, r.K, geo::projection_name(o.projection));
+        int y = paragraph(page, font, tx, y0, tw, head, grey, 2) + 6;
+        y = paragraph(page, font, tx, y, tw, s.caption, ink, 2) + 10;
+        if (!s.question.empty()) y = paragraph(page, font, tx, y, tw, "Question: " + s.question, ink, 2) + 10;
+        if (!s.question.empty())  // room to write the answer
+            for (int k = 0; k < 3 && y + 30 < y0 + kPanelH; ++k, y += 30)
+                for (int x = tx; x < tx + tw; ++x) page.set(x, y + 24, render::Rgb{170, 170, 170});
+    }
+    return platform::write_png(path, page, error);
+}
+
+}  // namespace noneuclid::app

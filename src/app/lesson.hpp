@@ -1,0 +1,55 @@
+// A lesson played (files/lesson_file.hpp, docs/lessons.md): its steps one after another on one
+// display, each a run of its scene (app/run.hpp) with the step's caption on the HUD, ended by
+// what counts as done, by its seconds, or by the display closing; and the lesson as a printable
+// worksheet (a PNG of each step's picture beside its caption, question and what counts as done).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "app/run.hpp"
+#include "files/lesson_file.hpp"
+
+namespace noneuclid::app {
+
+class LessonPlayer {
+public:
+    // `base`: the run's options (display, size, palette...); each step's scene, K and projection
+    // go over them. Everything passed must outlive the player.
+    LessonPlayer(const files::Lesson& lesson, const Options& base, Display& display, const char* display_name);
+
+    // One frame: false once the lesson is over or the display closed (or quit).
+    bool tick();
+    // The exit status at the end (the last step's loop's).
+    int finish();
+
+    int step() const { return step_; }           // the step playing, from 0
+    const Session& session() const { return *run_.session; }
+
+private:
+    void start(int step);
+    bool step_done() const;
+
+    const files::Lesson& lesson_;
+    Options base_, step_options_;
+    Display& display_;
+    const char* display_name_;
+    Script script_;  // (none: a lesson has no actions file)
+    LiveRun run_;
+    int step_ = -1;
+    long fire_seen_ = 0;
+    bool over_ = false;
+    int status_ = 0;
+    std::string caption_;
+};
+
+// The worksheet of `lesson` into `path` (a PNG): its title, and for each step the step's picture
+// drawn as `noneuclid render` would (o's size and palette), its caption, question and what
+// counts as done. False with one sentence in `error`.
+bool write_worksheet(const files::Lesson& lesson, const Options& o, const std::string& path, std::string& error);
+
+// `noneuclid lesson NAME [run's options]`: argv from `first` on are run's options; the display
+// chosen as run chooses it (app/cmd_run.cpp). Returns the exit status.
+int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first);
+
+}  // namespace noneuclid::app

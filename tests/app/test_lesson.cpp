@@ -1,0 +1,130 @@
+// Lessons played (app/lesson.hpp) on a display that presses keys at given frames, and printed:
+// a step ends when its seconds run out or when what counts as done happens (K past a value, a
+// press of fire), the next begins at its own curvature, and the worksheet is a PNG of the
+// lesson's steps (read back).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/lesson.hpp"
+#include "app/platform.hpp"
+
+namespace {
+namespace lesson_test {  // (a unity batch shares this file's scope with others)
+
+using namespace noneuclid;
+using world::Control;
+
+// Presses and releases at the frames given (counted across the whole lesson); never closes.
+class KeyDisplay final : public app::Display {
+public:
+    struct Key {
+        long frame;
+        Control control;
+        bool pressed;
+    };
+    explicit KeyDisplay(std::vector<Key> keys) : keys_(std::move(keys)) {
+        pixels_.assign(320 * 200 * 4, 0);
+        canvas_ = render::Canvas(pixels_.data(), 320, 200, 320 * 4, render::PixelFormat::xrgb8888());
+    }
+    render::Canvas canvas() override { return canvas_; }
+    void present() override { ++presented_; }
+    bool wait(int64_t, app::InputSink& sink) override {
+        for (const Key& k : keys_)
+            if (k.frame == presented_) sink.input({k.control, k.pressed});
+        return true;
+    }
+    bool closing() const override { return false; }
+    bool realtime() const override { return false; }
+    bool read_back(app::Picture&, std::string&) override { return false; }
+    const char* legend() const override { return "keys"; }
+    long presented() const { return presented_; }
+
+private:
+    std::vector<Key> keys_;
+    long presented_ = 0;
+    std::vector<uint8_t> pixels_;
+    render::Canvas canvas_;
+};
+
+// Plays `lesson`; for each step, the frame (presented so far) it began at and K at its start.
+struct Played {
+    std::vector<long> began;
+    std::vector<double> K;
+    int status = -1;
+};
+Played play(const files::Lesson& lesson, KeyDisplay& display) {
+    app::Options o = app::defaults(app::Command::run);
+    o.engine = world::engine_named("double");
+    app::LessonPlayer player(lesson, o, display, "test");
+    Played p;
+    p.began.push_back(0), p.K.push_back(player.session().curvature());
+    int step = 0;
+    for (long guard = 0; guard < 20000 && player.tick(); ++guard)
+        if (player.step() != step) {
+            step = player.step();
+            p.began.push_back(display.presented());
+            p.K.push_back(player.session().curvature());
+        }
+    p.status = player.finish();
+    return p;
+}
+
+TEST(Lesson, StepsEndByTheirSecondsOrWhenDoneAndBeginAtTheirK) {
+    files::Lesson l;
+    ASSERT_TRUE(files::builtin_lesson("curvature", l));
+    // Step 1 lasts 20 s; step 2 ends when K > 0.9 (K+ held from frame 1300: 0.5 a second from
+    // 0, so about 108 frames); step 3 when K < -0.9 (K- held from frame 1500, from K = +1).
+    KeyDisplay d({{1300, Control::curvature_up, true}, {1450, Control::curvature_up, false},
+                  {1500, Control::curvature_down, true}, {1900, Control::curvature_down, false}});
+    const Played p = play(l, d);
+    ASSERT_EQ(p.began.size(), 4u);
+    EXPECT_NEAR(p.began[1], 20 * 60, 2);
+    EXPECT_NEAR(p.began[2] - 1300, 0.9 / 0.5 * 60, 3);
+    EXPECT_NEAR(p.began[3] - 1500, 1.9 / 0.5 * 60, 3);
+    EXPECT_EQ(p.K[0], 0);
+    EXPECT_EQ(p.K[2], 1);   // step 3 begins at K = +1
+    EXPECT_EQ(p.K[3], -1);
+    EXPECT_NEAR(d.presented() - p.began[3], 20 * 60, 2);  // the last step's 20 s
+    EXPECT_EQ(p.status, 0);
+}
+
+TEST(Lesson, AStepWithoutSecondsEndsOnFire) {
+    files::Lesson l;
+    files::SceneError e;
+    ASSERT_TRUE(files::parse_lesson("title = \"t\"\n[[step]]\ncaption = \"a\"\nscene = \"fig2\"\n"
+                                    "[[step]]\ncaption = \"b\"\ncurvature = -0.5\nseconds = 1\n", "t.toml", l, e))
+        << e.to_string();
+    KeyDisplay d({{300, Control::fire, true}, {302, Control::fire, false}});
+    const Played p = play(l, d);
+    ASSERT_EQ(p.began.size(), 2u);
+    EXPECT_NEAR(p.began[1], 300, 2);
+    EXPECT_EQ(p.K[1], -0.5);
+    EXPECT_NEAR(d.presented() - p.began[1], 60, 2);
+}
+
+TEST(Lesson, TheWorksheetIsAPageOfItsSteps) {
+    files::Lesson l;
+    ASSERT_TRUE(files::builtin_lesson("lines", l));
+    const std::string path = ::testing::TempDir() + "lesson_worksheet.png";
+    std::string error;
+    ASSERT_TRUE(app::write_worksheet(l, app::defaults(app::Command::run), path, error)) << error;
+    int w = 0, h = 0;
+    std::string rgb;
+    ASSERT_TRUE(platform::read_png(path, w, h, rgb, error)) << error;
+    EXPECT_EQ(w, 1240);
+    EXPECT_EQ(h, 190 + 340 * static_cast<int>(l.steps.size()) + 60);
+    auto at = [&](int x, int y) { return std::string(rgb, (static_cast<std::size_t>(y) * w + x) * 3, 3); };
+    EXPECT_EQ(at(5, 5), std::string(3, '\xff')) << "white paper";
+    for (int i = 0; i < static_cast<int>(l.steps.size()); ++i) {
+        // Each step's picture: its disc's dark background at the panel's centre-left.
+        const std::string p = at(60 + 120, 190 + 340 * i + 144);
+        EXPECT_LT(static_cast<unsigned char>(p[0]) + static_cast<unsigned char>(p[1]) + static_cast<unsigned char>(p[2]), 120)
+            << "step " << i + 1;
+    }
+}
+
+}  // namespace lesson_test
+}  // namespace
