@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/lesson.hpp"
 #include "app/run.hpp"
 #include "web_display.hpp"
 
@@ -28,9 +29,15 @@ struct Run {
     std::size_t recording_size = 0;
     std::FILE* recording_file = nullptr;
     app::LiveRun live;
+    files::Lesson lesson_data;                  // ?lesson=: the lesson played instead of live
+    std::unique_ptr<app::LessonPlayer> lesson;
     bool done = false;
 
+    app::Session& session() { return lesson ? lesson->session() : *live.session; }
+    const world::Scene& scene() const { return lesson ? lesson->scene() : live.scene; }
+
     ~Run() {
+        lesson.reset();
         live.loop.reset(), live.session.reset(), live.recorder.reset();
         if (recording_file) std::fclose(recording_file);
         std::free(recording);
@@ -62,6 +69,12 @@ void start(const std::vector<std::string>& words, Run& run) {
     app::Options& o = run.options;
     o = app::layered_options(static_cast<int>(argv.size()), argv.data(), 1, app::Command::run, run.script);
     refuse_options(o);
+    if (!o.lesson.empty()) {  // a lesson: its steps on the page's display, not recorded
+        run.lesson_data = app::load_lesson(o.lesson);
+        run.display = std::make_unique<WebDisplay>(o.width, o.height, o.format);
+        run.lesson = std::make_unique<app::LessonPlayer>(run.lesson_data, o, *run.display, "web");
+        return;
+    }
     app::prepare_run(run.live, o);
     run.display = std::make_unique<WebDisplay>(o.width, o.height, o.format);
     run.recording_file = open_memstream(&run.recording, &run.recording_size);
@@ -120,6 +133,12 @@ EMSCRIPTEN_KEEPALIVE int nw_start(const char* words) {
 // One frame. 1 while the run goes on; 0 once it has ended (frames reached, Esc, nw_stop).
 EMSCRIPTEN_KEEPALIVE int nw_tick() {
     if (!noneuclid::web::running()) return 0;
+    if (g_run->lesson) {
+        if (g_run->lesson->tick()) return 1;
+        g_run->done = true;
+        g_message = g_run->lesson->finish() == 0 ? "" : "the lesson failed (see the console).";
+        return 0;
+    }
     if (g_run->live.loop->tick()) return 1;
     const int status = g_run->live.loop->finish();
     std::fflush(g_run->recording_file);
@@ -150,7 +169,7 @@ EMSCRIPTEN_KEEPALIVE void nw_input(int control, int pressed) {
 EMSCRIPTEN_KEEPALIVE int nw_mark(double x, double y) {
     if (!noneuclid::web::running()) return 0;
     const noneuclid::render::Canvas c = g_run->display->canvas();
-    return g_run->live.session->mark_at(x, y, c.width(), c.height()) ? 1 : 0;
+    return g_run->session().mark_at(x, y, c.width(), c.height()) ? 1 : 0;
 }
 
 // The control a key (KeyboardEvent.key) stands for, or -1.
@@ -166,7 +185,7 @@ EMSCRIPTEN_KEEPALIVE int nw_projection_taps(const char* name) {
     const int count = static_cast<int>(std::size(geo::kProjections));
     int now = 0, want = -1;
     for (int i = 0; i < count; ++i) {
-        if (g_run && geo::kProjections[i] == g_run->live.session->options().draw.projection) now = i;
+        if (g_run && geo::kProjections[i] == g_run->session().options().draw.projection) now = i;
         if (std::string(name) == geo::projection_name(geo::kProjections[i])) want = i;
     }
     return want < 0 ? -1 : (want - now + count) % count;
@@ -181,17 +200,19 @@ EMSCRIPTEN_KEEPALIVE const char* nw_scenes() {
 }
 
 // The run's state, for the page's status line.
-EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->live.session->curvature() : 0; }
-EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->live.session->frame()) : 0; }
+EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->session().curvature() : 0; }
+EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->session().frame()) : 0; }
 EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
-    return g_run ? noneuclid::geo::projection_name(g_run->live.session->options().draw.projection) : "";
+    return g_run ? noneuclid::geo::projection_name(g_run->session().options().draw.projection) : "";
 }
+// The lesson's step playing, from 1 (0: no lesson).
+EMSCRIPTEN_KEEPALIVE int nw_lesson_step() { return g_run && g_run->lesson ? g_run->lesson->step() + 1 : 0; }
 EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
     return g_run ? noneuclid::world::engine_name(g_run->options.engine) : "";
 }
 // 1 when the run's scene has the game (fire starts it and fires): the page shows the fire
 // button and mentions Space only then.
-EMSCRIPTEN_KEEPALIVE int nw_has_game() { return g_run && g_run->live.scene.game.on ? 1 : 0; }
+EMSCRIPTEN_KEEPALIVE int nw_has_game() { return g_run && g_run->scene().game.on ? 1 : 0; }
 // The page's space changed (a turned phone, full screen): the canvas is width x height pixels
 // from the next frame on, and the recording says so, as a resized window's does.
 EMSCRIPTEN_KEEPALIVE void nw_resize(int width, int height) {

@@ -14,8 +14,6 @@
 
 namespace noneuclid::app {
 
-namespace {
-
 files::Lesson load_lesson(const std::string& name) {
     files::Lesson lesson;
     if (files::builtin_lesson(name, lesson)) return lesson;
@@ -27,8 +25,6 @@ files::Lesson load_lesson(const std::string& name) {
     if (!files::load_lesson_file(name, lesson, e)) usage_error(e.to_string() + ".");
     return lesson;
 }
-
-}  // namespace
 
 int lesson_command(int argc, char** argv, int first) {
     if (first >= argc || argv[first][0] == '-') {

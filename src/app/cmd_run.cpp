@@ -69,11 +69,8 @@ void set_up_run(int argc, char** argv, int first, RunSetup& r) {
     r.size_given = given.size_given;
 }
 
-}  // namespace
-
-int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first) {
-    RunSetup r;
-    set_up_run(argc, argv, first, r);
+// The lesson on the display r chose.
+int play_lesson_on(const files::Lesson& lesson, RunSetup& r) {
     {
         LiveRun check;  // every step's scene loads before the display opens: a bad one is said first
         for (std::size_t i = 0; i < lesson.steps.size(); ++i)
@@ -97,9 +94,18 @@ int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first) {
     return status;
 }
 
+}  // namespace
+
+int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first) {
+    RunSetup r;
+    set_up_run(argc, argv, first, r);
+    return play_lesson_on(lesson, r);
+}
+
 int run_command(int argc, char** argv, int first) {
     RunSetup r;
     set_up_run(argc, argv, first, r);
+    if (!r.o.lesson.empty()) return play_lesson_on(load_lesson(r.o.lesson), r);
     const DisplayRow& shown = *r.shown;
     files::Board& board = r.board;
     Script& script = r.script;

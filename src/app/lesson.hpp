@@ -25,6 +25,8 @@ public:
 
     int step() const { return step_; }           // the step playing, from 0
     const Session& session() const { return *run_.session; }
+    Session& session() { return *run_.session; }
+    const world::Scene& scene() const { return run_.scene; }  // the step's
 
 private:
     void start(int step);
@@ -51,5 +53,7 @@ bool write_worksheet(const files::Lesson& lesson, const Options& o, const std::s
 // `noneuclid lesson NAME [run's options]`: argv from `first` on are run's options; the display
 // chosen as run chooses it (app/cmd_run.cpp). Returns the exit status.
 int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first);
+// The lesson `name` names: a built-in's, else a file's (a UsageError, one sentence, if neither).
+files::Lesson load_lesson(const std::string& name);
 
 }  // namespace noneuclid::app

@@ -185,6 +185,8 @@ const OptionRow kOptions[] = {
      "the HUD's text size, N pixels per font pixel, 1 to 8 (default: 2 on a canvas 900 pixels tall or more, "
      "else 1; the web page sets it from the screen's pixel density)",
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.hud_scale = static_cast<int>(a.count(opt, 1, 8)); }},
+    {"--lesson", "NAME|FILE", kRun, "play a lesson (docs/lessons.md) instead of one scene: as 'noneuclid lesson NAME'", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.lesson = a.value(opt); }},
     {"--one-button", "", kRun, "fire alone plays: the ship turns by itself, hold fire to thrust, tap to fire (or, "
      "without the game, for the next K); docs/accessibility.md", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},

@@ -232,4 +232,33 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     expect(!off.full && off.text === 'full screen', `after a second click: ${JSON.stringify(off)}`);
     await page.close();
   });
+
+  await check('?lesson=curvature plays the lesson\'s first step with its caption; an unknown lesson is one sentence', async () => {
+    const {page, started} = await open('lesson=curvature&size=400x240');
+    expect(started === true, 'the lesson did not start');
+    await waitFrames(page, 5);
+    const s = await state(page);
+    expect(s.lessonStep === 1 && s.K === 0 && s.running, `the lesson's state: ${JSON.stringify(s)}`);
+    // The caption: text in the rows above the legend, which a plain run of the scene leaves empty.
+    const rows = (p) => p.evaluate(`(() => {
+      const c = document.getElementById('screen'), d = c.getContext('2d').getImageData(0, 0, 60, c.height).data;
+      const bg = d[0] << 16 | d[1] << 8 | d[2];
+      let lit = 0;
+      for (let y = c.height - 60; y < c.height - 20; ++y)
+        for (let x = 0; x < 60; ++x) lit += (d[(y * 60 + x) * 4] << 16 | d[(y * 60 + x) * 4 + 1] << 8 | d[(y * 60 + x) * 4 + 2]) !== bg;
+      return lit;
+    })()`);
+    const withCaption = await rows(page);
+    await page.close();
+    const plain = await open('scene=kiosk&size=400x240');
+    await waitFrames(plain.page, 5);
+    const without = await rows(plain.page);
+    await plain.page.close();
+    expect(withCaption > without + 20, `lit pixels above the legend: ${withCaption} in the lesson, ${without} without`);
+    const bad = await open('lesson=nosuch');
+    expect(bad.started === false, '?lesson=nosuch started');
+    const message = (await state(bad.page)).message;
+    expect(message.includes("'nosuch'") && message.includes('curvature'), `the message: '${message}'`);
+    await bad.page.close();
+  });
 }

@@ -77,6 +77,8 @@
       if (key === 'scene' && !builtins.includes(value)) {
         words.push('--scene', await put(value, `no built-in scene '${value}' and no file ${value} beside the page: ` +
                                         `the built-in scenes are ${builtins.join(', ')}.`));
+      } else if (key === 'lesson' && (value.endsWith('.toml') || value.includes('/'))) {
+        words.push('--lesson', await put(value, `no lesson file ${value} beside the page: put it there, or name a built-in lesson.`));
       } else if (key === 'actions') {
         words.push('--actions', await put(value, `no actions file ${value} beside the page: put it there, or give its address.`));
       } else if (FLAGS.has(key)) {
@@ -92,7 +94,7 @@
     const words = [];
     for (let i = 0; i < startWords.length; ++i) {
       const w = startWords[i];
-      if (['--scene', '--engine', '--actions', '--frames'].includes(w)) ++i;
+      if (['--scene', '--engine', '--actions', '--frames', '--lesson'].includes(w)) ++i;
       else words.push(w);
     }
     return words.concat('--scene', scene, '--engine', engine);
@@ -381,6 +383,7 @@
     state: () => ({
       running, frame: mod ? mod._nw_frame() : 0, K: mod ? mod._nw_curvature() : 0,
       pixels: [canvas.width, canvas.height], hudScale: sizeChosen ? pageSize().hudScale : 1,
+      lessonStep: mod ? mod._nw_lesson_step() : 0,
       message: $('message').hidden ? '' : $('message').textContent,
     }),
     // Resolves when the run has ended: stop() ends it after the frame being drawn.
