@@ -113,6 +113,12 @@ int run_command(int argc, char** argv, int first) {
     const bool size_given = r.size_given;
     LiveRun run;
     prepare_run(run, o);
+    std::unique_ptr<files::Lesson> attract_lesson;
+    if (!o.attract_lesson.empty()) {
+        if (!o.record.empty() || !o.actions.empty())
+            usage_error("--attract-lesson starts a new run for each visitor: it cannot be recorded or replayed (drop --record or --actions).");
+        attract_lesson = std::make_unique<files::Lesson>(load_lesson(o.attract_lesson));
+    }
 
     std::string error;
     std::unique_ptr<Display> display = shown.open(o, board, error);
@@ -137,8 +143,16 @@ int run_command(int argc, char** argv, int first) {
     }
     const std::unique_ptr<HighScoreTable> scores = run.scene.game.on ? open_scores(o.scores, true) : nullptr;
     if (scores && !o.best_given) o.best = scores->best();
-    compose_run(run, o, script, *display, shown.name, recording.file(), scores.get());
-    int status = run.loop->run();
+    int status = 0;
+    if (attract_lesson) {  // attract mode plays a lesson (app/lesson.hpp)
+        AttractLessonRun a(*attract_lesson, o, *display, shown.name, scores.get());
+        while (a.tick()) {
+        }
+        status = a.finish();
+    } else {
+        compose_run(run, o, script, *display, shown.name, recording.file(), scores.get());
+        status = run.loop->run();
+    }
     display.reset();  // the console back before the last lines
     std::string why;
     if (recording.file() && !recording.commit(why)) {

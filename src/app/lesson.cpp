@@ -86,6 +86,56 @@ bool LessonPlayer::tick() {
 
 int LessonPlayer::finish() { return status_; }
 
+AttractLessonRun::AttractLessonRun(const files::Lesson& lesson, const Options& o, Display& display, const char* name,
+                                   HighScoreTable* scores)
+    : lesson_(lesson), o_(o), lesson_o_(o), display_(display), name_(name), scores_(scores) {
+    lesson_o_.attract = 1, lesson_o_.screenshot.clear();  // within the lesson the autopilot flies at once
+    o_.actions.clear();
+    start_run();
+}
+
+void AttractLessonRun::start_run() {
+    player_.reset();
+    Options o = o_;
+    prepare_run(run_, o);
+    compose_run(run_, o, script_, display_, name_, nullptr, scores_);
+}
+
+bool AttractLessonRun::tick() {
+    // The run's frames (o.frames, 0: until the display closes) count across the scene's runs and
+    // the lesson's plays.
+    if (o_.frames > 0 && ++frames_ > o_.frames) {
+        status_ = player_ ? player_->finish() : run_.loop->finish();
+        if (player_ && !o_.screenshot.empty()) {  // (the lesson's steps keep no screenshot: the run's is taken here)
+            Picture shot;
+            std::string error;
+            if (!display_.read_back(shot, error) || !platform::write_png(o_.screenshot, shot.canvas, error)) {
+                std::fprintf(stderr, "noneuclid: the screenshot: %s\n", error.c_str());
+                status_ = status_ ? status_ : 1;
+            } else {
+                std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, the lesson's step %d, K = %.3f)\n", o_.screenshot.c_str(),
+                             shot.canvas.width(), shot.canvas.height(), player_->step() + 1, player_->session().curvature());
+            }
+        }
+        return false;
+    }
+    if (player_) {
+        const bool going = player_->tick();
+        if (player_->session().presses() > 0) {  // a visitor: the scene for them, from its start
+            start_run();
+            return true;
+        }
+        if (!going) {
+            if (display_.closing() || player_->session().quit()) return status_ = player_->finish(), false;
+            player_ = std::make_unique<LessonPlayer>(lesson_, lesson_o_, display_, name_);  // over: again
+        }
+        return true;
+    }
+    if (!run_.loop->tick()) return status_ = run_.loop->finish(), false;
+    if (run_.session->attract()) player_ = std::make_unique<LessonPlayer>(lesson_, lesson_o_, display_, name_);
+    return true;
+}
+
 namespace {
 
 // Text at (x, y) wrapped to `width` pixels at word boundaries; returns the y below it.

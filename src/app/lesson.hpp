@@ -45,6 +45,35 @@ private:
     std::string caption_;
 };
 
+// A run whose attract mode plays a lesson (the kiosk's `[attract] lesson`, --attract-lesson):
+// the scene's run until its attract mode begins (no button for o.attract seconds), then the
+// lesson, over and over, attract mode flying within each of its steps (so that a step waiting
+// for K ends as the autopilot sweeps it); a button pressed during the lesson gives the visitor a
+// new run of the scene. Not recorded (each run is new).
+class AttractLessonRun {
+public:
+    AttractLessonRun(const files::Lesson& lesson, const Options& o, Display& display, const char* display_name,
+                     HighScoreTable* scores);
+    bool tick();  // one frame: false when the run ends (the display closed, quit)
+    int finish() { return status_; }
+    bool in_lesson() const { return player_ != nullptr; }
+    const Session& session() const { return player_ ? player_->session() : *run_.session; }
+
+private:
+    void start_run();
+
+    const files::Lesson& lesson_;
+    Options o_, lesson_o_;
+    Display& display_;
+    const char* name_;
+    HighScoreTable* scores_;
+    Script script_;
+    LiveRun run_;
+    std::unique_ptr<LessonPlayer> player_;
+    long frames_ = 0;
+    int status_ = 0;
+};
+
 // The worksheet of `lesson` into `path` (a PNG): its title, and for each step the step's picture
 // drawn as `noneuclid render` would (o's size and palette), its caption, question and what
 // counts as done. False with one sentence in `error`.

@@ -187,6 +187,9 @@ const OptionRow kOptions[] = {
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.hud_scale = static_cast<int>(a.count(opt, 1, 8)); }},
     {"--lesson", "NAME|FILE", kRun, "play a lesson (docs/lessons.md) instead of one scene: as 'noneuclid lesson NAME'", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.lesson = a.value(opt); }},
+    {"--attract-lesson", "NAME|FILE", kRun,
+     "attract mode plays this lesson (docs/lessons.md) until a button is pressed, instead of flying the ship", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.attract_lesson = a.value(opt); }},
     {"--one-button", "", kRun, "fire alone plays: the ship turns by itself, hold fire to thrust, tap to fire (or, "
      "without the game, for the next K); docs/accessibility.md", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},
@@ -366,6 +369,7 @@ void apply_board(const files::Board& b, Options& o) {
     o.fps = b.fps;
     o.attract = b.idle_seconds;
     o.sweep = b.sweep_seconds;
+    o.attract_lesson = b.attract_lesson;
     o.device = b.device;
 }
 

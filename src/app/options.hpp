@@ -57,6 +57,7 @@ struct Options {
     int hud_scale = 0;          // the HUD's pixels per font pixel; 0: 2 on a canvas 900 tall or more, else 1
     std::string caption;        // a lesson step's caption on the HUD (app/lesson.hpp; no option sets it)
     std::string lesson;         // run: play this lesson (a built-in's name or a file) instead of a scene
+    std::string attract_lesson; // run: attract mode plays this lesson until a button is pressed
     bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)

@@ -153,6 +153,8 @@ public:
     double curvature() const override { return static_cast<double>(world_.K); }
     long score() const override { return world_.game().score; }
     long fire_presses() const override { return fire_presses_; }
+    long presses() const override { return presses_; }
+    bool attract() const override { return autopilot_.active(); }
     bool quit() const override { return quit_; }
     void set_fps(double fps) override { fps_ = fps; }
     const SessionOptions& options() const override { return options_; }
@@ -160,7 +162,7 @@ public:
 private:
     static constexpr int kQueue = 64;
     OneButton one_button_;
-    long fire_presses_ = 0;
+    long fire_presses_ = 0, presses_ = 0;
 
     // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
     // zoom ends, that it ends there (docs/earth.md).
@@ -188,6 +190,7 @@ private:
         }
         user_held_[static_cast<int>(e.control)] = e.pressed;
         if (e.control == world::Control::fire && e.pressed) ++fire_presses_;
+        if (e.pressed) ++presses_;
         if (options_.one_button && e.control == world::Control::fire) {  // (app/one_button.hpp)
             world::InputEvent out[2];
             const int n = one_button_.fire(e.pressed, world_.time, world_.game().on(), out);

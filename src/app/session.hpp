@@ -96,6 +96,8 @@ public:
     virtual double curvature() const = 0;  // K now
     virtual long score() const = 0;        // the game's score now (0 without the game)
     virtual long fire_presses() const = 0; // presses of fire so far (a lesson's "press fire to go on")
+    virtual long presses() const = 0;      // presses of any button or key so far (not the autopilot's)
+    virtual bool attract() const = 0;      // attract mode's autopilot flies now
     virtual bool quit() const = 0;         // a quit control came
     virtual void set_fps(double fps) = 0;  // shown by the HUD with show_fps
     virtual const SessionOptions& options() const = 0;  // as now (P and H change them)

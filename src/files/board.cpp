@@ -85,7 +85,8 @@ void read_board(const toml::table& root, Board& b) {
     }
     if (const toml::table* t = section(root, "attract")) {
         const Reader a(*t, "attract: ");
-        a.only({"idle_seconds", "sweep_seconds"});
+        a.only({"idle_seconds", "sweep_seconds", "lesson"});
+        b.attract_lesson = a.plain_string("lesson", b.attract_lesson);
         b.idle_seconds = a.number("idle_seconds", b.idle_seconds, 0, 1e7, "seconds without a button; 0 turns attract mode off");
         b.sweep_seconds = a.number("sweep_seconds", b.sweep_seconds, 4, 1e5, "seconds for K from -1 to +1");
     }

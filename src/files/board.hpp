@@ -24,6 +24,7 @@
 //     [attract]
 //     idle_seconds = 120      # no button for this long: the autopilot flies; 0: never
 //     sweep_seconds = 40      # one sweep of K from -1 to +1 (and as long back)
+//     lesson = ""             # a lesson attract mode plays instead (docs/lessons.md)
 //     [[button]]
 //     action = "thrust"       # world::Control names
 //     gpio = 17               # line offset on the chip (the BCM number on a Pi); optional
@@ -71,6 +72,7 @@ struct Board {
     // [attract]
     double idle_seconds = 120;
     double sweep_seconds = 40;
+    std::string attract_lesson;  // "" attract mode flies the ship; else it plays this lesson
 
     std::vector<BoardButton> buttons;
     bool has_gpio() const {

@@ -128,3 +128,42 @@ TEST(Lesson, TheWorksheetIsAPageOfItsSteps) {
 
 }  // namespace lesson_test
 }  // namespace
+
+namespace {
+namespace attract_lesson_test {  // (a unity batch shares this file's scope with others)
+
+using namespace noneuclid;
+using lesson_test::KeyDisplay;
+using world::Control;
+
+// The kiosk's attract mode playing a lesson: after a second without a button the lesson's first
+// step (fig2 at K = 0) plays with attract mode flying in it; a press gives a new run of the
+// scene; left alone again, the lesson comes back.
+TEST(Lesson, AttractModePlaysALessonUntilAButtonIsPressed) {
+    files::Lesson l;
+    ASSERT_TRUE(files::builtin_lesson("lines", l));
+    app::Options o = app::defaults(app::Command::run);
+    o.scene = "kiosk", o.attract = 1, o.engine = world::engine_named("double");
+    KeyDisplay d({{300, Control::thrust, true}, {305, Control::thrust, false}});
+    app::AttractLessonRun run(l, o, d, "test", nullptr);
+    long lesson_from = -1, back_at = -1, again_at = -1;
+    for (long f = 0; f < 800 && run.tick(); ++f) {
+        if (run.in_lesson() && lesson_from < 0) {
+            lesson_from = d.presented();
+            EXPECT_EQ(run.session().options().scene_name, "fig2");
+            EXPECT_EQ(run.session().curvature(), 0);
+        }
+        if (lesson_from >= 0 && back_at < 0 && !run.in_lesson()) {
+            back_at = d.presented();
+            EXPECT_EQ(run.session().options().scene_name, "kiosk");
+            EXPECT_EQ(run.session().frame(), 0) << "a new run of the scene";
+        }
+        if (back_at >= 0 && again_at < 0 && run.in_lesson()) again_at = d.presented();
+    }
+    EXPECT_NEAR(lesson_from, 60, 3) << "attract mode's second";
+    EXPECT_NEAR(back_at, 300, 2) << "the press";
+    EXPECT_NEAR(again_at - back_at, 60, 8) << "a second after the visitor left";
+}
+
+}  // namespace attract_lesson_test
+}  // namespace

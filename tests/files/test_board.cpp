@@ -141,7 +141,7 @@ std::string fields(const Board& b) {
                     "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" + b.palette +
                     std::to_string(b.large_hud) + std::to_string(b.one_button) + "|" +
                     std::to_string(b.threads) + "|" + std::to_string(b.debounce_ms) + "|" + b.evdev_device + "|" +
-                    std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds);
+                    std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds) + "|" + b.attract_lesson;
     for (const std::string& m : b.models) s += "|model " + m;
     for (const std::string& c : b.chips) s += "|chip " + c;
     for (const auto& bb : b.buttons)
