@@ -192,8 +192,11 @@ double bend_px(double lat0, double lon0, world::SceneBody::Vertex u, world::Scen
 }
 
 TEST(Earth, EveryCoastPointLiesWithinHalfAPixelOfTheSimplifiedLine) {
-    for (const auto& [lat, lon] : {std::pair{51.5, 0.0}, {90.0, 0.0}, {-90.0, 0.0}, {0.0, 180.0}, {-33.9, 151.2}})
-    for (const bool bent : {true, false}) {  // (the level halved for every K, and the one for K = 1 alone)
+    int k = 0;
+    for (const bool bent : {true, false})  // (the level halved for every K, and the one for K = 1 alone)
+    for (const auto& [lat, lon] : {std::pair{51.5, 0.0}, {90.0, 0.0}, {-90.0, 0.0}, {0.0, 180.0}, {-33.9, 151.2}}) {
+        // (Under emulation every kEmulatedStride-th case: its long double is slow there.)
+        if (k++ % test::kEmulatedStride != 0) continue;
         SCOPED_TRACE(bent ? "bent" : "plain");
         world::SceneParams p;
         p.centre_lat = lat, p.centre_lon = lon;
