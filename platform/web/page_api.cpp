@@ -94,6 +94,7 @@ constexpr Key kKeys[] = {
     {"3", "spherical"},          {"p", "projection"},     {"P", "projection"},    {"h", "hud"},
     {"H", "hud"},                {"r", "reset"},          {"R", "reset"},         {" ", "fire"},
     {"m", "instrument"},         {"M", "instrument"},     {"Escape", "quit"},
+    {"n", "mute"},               {"N", "mute"},
 };
 
 bool running() { return g_run && !g_run->done; }

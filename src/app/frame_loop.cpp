@@ -31,6 +31,7 @@ bool FrameLoop::tick() {
         recorder_->setting("size", std::to_string(width_) + "x" + std::to_string(height_));
     }
     session_.advance(player_);
+    if (sound_) sound_->frame(session_.sound(), session_.options().dt);
     session_.draw(canvas);
     display_.present();
     ++frames_, ++fps_frames_;

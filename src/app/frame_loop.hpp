@@ -13,6 +13,7 @@
 #include "app/recorder.hpp"
 #include "app/script.hpp"
 #include "app/session.hpp"
+#include "app/sound.hpp"
 
 namespace noneuclid::app {
 
@@ -38,6 +39,8 @@ public:
         return finish();
     }
     long frames() const { return frames_; }
+    // Where each frame's sound goes (app/sound.hpp; null: none). It must outlive the loop.
+    void set_sound(SoundOut* sound) { sound_ = sound; }
 
 private:
     void input(world::InputEvent e) override { session_.queue(e); }
@@ -45,6 +48,7 @@ private:
     Display& display_;
     Session& session_;
     Recorder* recorder_;
+    SoundOut* sound_ = nullptr;
     LoopOptions o_;
     ScriptPlayer player_;
     int64_t period_, start_, next_, fps_since_;

@@ -42,6 +42,7 @@ public:
           pool_(o.threads),
           autopilot_(o.attract, scene.curvature_rate),
           dt_(o.dt) {
+        sound_.muted = o.muted;
         scratch_.prepare(world_);
         if (pool_.size() > 1) parallel_.prepare(world_, pool_);
     }
@@ -103,8 +104,10 @@ public:
             for (int i = 0; i < k; ++i) apply(ob[i]);
         }
         const world::GamePhase before = world_.game().phase;
+        const double next_shot = world_.game().next_shot();
         world_.step(dt_);
         game_events(before);
+        sound_cues(next_shot);
     }
 
     void draw_world(const render::Canvas& c, Layers layers, bool backdrop) override {
@@ -155,6 +158,7 @@ public:
     long fire_presses() const override { return fire_presses_; }
     long presses() const override { return presses_; }
     bool attract() const override { return autopilot_.active(); }
+    SoundFrame sound() const override { return sound_; }
     bool quit() const override { return quit_; }
     void set_fps(double fps) override { fps_ = fps; }
     const SessionOptions& options() const override { return options_; }
@@ -225,6 +229,10 @@ private:
                 record(ScriptEvent::tap, e.control);
                 break;
             case world::Control::quit: quit_ = true; break;
+            case world::Control::mute:
+                sound_.muted = !sound_.muted;
+                record(ScriptEvent::tap, e.control);
+                break;
             default: break;
         }
     }
@@ -268,6 +276,24 @@ private:
         }
         if (before == world::GamePhase::over && g.phase == world::GamePhase::ready) autopilot_.engage();
     }
+    // After a step: its cues. A shot moved the game's next shot on (Game::shoot); the game's
+    // events name the rest.
+    void sound_cues(double next_shot) {
+        const auto& g = world_.game();
+        sound_.cues = 0;
+        sound_.thrust = false;
+        if (autopilot_.active() || replayed_attract_) return;
+        bool started = false;  // (a game's start moves the next shot on too, and fires none)
+        for (int i = 0; i < g.event_count(); ++i) switch (g.events()[i].kind) {
+                case world::GameEvent::hit: sound_.add(Cue::hit); break;
+                case world::GameEvent::crash: sound_.add(Cue::crash); break;
+                case world::GameEvent::level: sound_.add(Cue::level); break;
+                case world::GameEvent::over: sound_.add(Cue::over); break;
+                case world::GameEvent::start: started = true; break;
+            }
+        if (g.next_shot() > next_shot && !started) sound_.add(Cue::fire);
+        sound_.thrust = world_.held(world::Action::thrust);
+    }
     render::HudGame hud_game() const {
         render::HudGame h;
         const auto& g = world_.game();
@@ -300,6 +326,7 @@ private:
     int queued_ = 0;
     bool user_held_[world::kControlCount] = {};
     bool quit_ = false, replayed_attract_ = false;
+    SoundFrame sound_;
     double fps_ = 0;
 };
 

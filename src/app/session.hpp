@@ -15,6 +15,7 @@
 #include "app/autopilot.hpp"
 #include "world/engines.hpp"
 #include "app/script.hpp"
+#include "app/sound.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
 #include "render/font.hpp"
@@ -39,6 +40,7 @@ struct SessionOptions {
     int threads = 1;              // drawing threads (a pool started once); the same pixels
     double dt = 1.0 / 60;         // world seconds per step
     long best = 0;                // a game's high score before this session (its HUD shows it)
+    bool muted = false;           // the sound starts muted (the mute control turns it on and off)
 };
 
 // Told of each game that ends (the high-score table, app/high_scores.hpp).
@@ -98,6 +100,10 @@ public:
     virtual long fire_presses() const = 0; // presses of fire so far (a lesson's "press fire to go on")
     virtual long presses() const = 0;      // presses of any button or key so far (not the autopilot's)
     virtual bool attract() const = 0;      // attract mode's autopilot flies now
+    // What the last step asks of the sound (app/sound.hpp): the game's cues that began in it (a
+    // shot fired, a hit, a crash, a new level, game over), thrust held, the mute. Attract mode
+    // is silent: an idle kiosk does not play to the room.
+    virtual SoundFrame sound() const = 0;
     virtual bool quit() const = 0;         // a quit control came
     virtual void set_fps(double fps) = 0;  // shown by the HUD with show_fps
     virtual const SessionOptions& options() const = 0;  // as now (P and H change them)

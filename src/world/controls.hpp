@@ -16,8 +16,9 @@ enum class Control : uint8_t {
     projection,  // next projection (on press)
     hud,         // HUD on/off (on press)
     quit,        // leave the program (on press; for keyboards, not kiosk buttons)
+    mute,        // sound off/on (on press; app/sound.hpp)
 };
-inline constexpr int kControlCount = 15;
+inline constexpr int kControlCount = 16;
 static_assert(static_cast<int>(Control::thrust) == static_cast<int>(Action::thrust) &&
               static_cast<int>(Control::left) == static_cast<int>(Action::turn_left) &&
               static_cast<int>(Control::right) == static_cast<int>(Action::turn_right) &&
@@ -34,7 +35,8 @@ static_assert(static_cast<int>(Control::thrust) == static_cast<int>(Action::thru
 inline const char* control_name(Control c) {
     static const char* const names[] = {"thrust",     "left", "right",     "curvature_up", "curvature_down",
                                         "preset",     "reset", "hyperbolic", "flat",        "spherical",
-                                        "fire",       "instrument", "projection", "hud",  "quit"};
+                                        "fire",       "instrument", "projection", "hud",  "quit",
+                                        "mute"};
     return names[static_cast<int>(c)];
 }
 inline bool parse_control(const std::string& s, Control& out) {

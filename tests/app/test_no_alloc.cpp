@@ -176,6 +176,22 @@ private:
     app::MemoryDisplay inner_{320, 240, render::PixelFormat::rgb565()};
 };
 
+// Each frame's sound rendered, as a platform's SoundOut does (app/sound.hpp): the synthesiser
+// allocates nothing either.
+class SynthOut final : public app::SoundOut {
+public:
+    void frame(const app::SoundFrame& f, double seconds) override {
+        synth_.apply(f);
+        synth_.render(samples_, static_cast<int>(seconds * synth_.rate() + 0.5));
+        rendered_ += synth_.active();
+    }
+    long rendered_ = 0;  // frames with something sounding
+
+private:
+    app::Synth synth_{44100};
+    int16_t samples_[4096] = {};
+};
+
 long loop_allocations(world::EngineKind engine, int threads, const char* scene_name = "kiosk") {
     world::Scene scene;
     EXPECT_TRUE(world::builtin_scene(scene_name, {}, scene));
@@ -187,6 +203,8 @@ long loop_allocations(world::EngineKind engine, int threads, const char* scene_n
     app::LoopOptions lo;
     lo.frames = 400;
     app::FrameLoop loop(display, *session, nullptr, nullptr, lo);
+    SynthOut sound;
+    loop.set_sound(&sound);
     for (int i = 0; i < 3; ++i) loop.tick();  // warm up
     g_allocations = 0;
     g_counting = true;
@@ -194,6 +212,7 @@ long loop_allocations(world::EngineKind engine, int threads, const char* scene_n
     while (loop.tick()) ++frames;
     g_counting = false;
     EXPECT_EQ(frames, 397);
+    EXPECT_GT(sound.rendered_, 0) << "the keys thrust and fire: something sounded";
     return g_allocations.load();
 }
 
