@@ -22,7 +22,7 @@ _np_group() {
         core) echo g++ cmake make pkg-config libglm-dev libtomlplusplus-dev ;;
         # Building and running the program (the release preset), and its manual page (help2man,
         # small: the perl it needs comes with git and dpkg-dev).
-        build) echo @core libpng-dev libgif-dev zlib1g-dev libx11-dev libxext-dev libgpiod-dev help2man ;;
+        build) echo @core libpng-dev libgif-dev zlib1g-dev libx11-dev libxext-dev libgpiod-dev libasound2-dev help2man ;;
         # The native test suite: GoogleTest, Google Benchmark, the Cairo reference, a virtual X
         # server driven by xdotool and read with xwininfo (x11-utils); shellcheck for the scripts;
         # PROJ's proj (proj-bin) for the earth scene's check against its projections; ccache,

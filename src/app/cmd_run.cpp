@@ -69,6 +69,19 @@ void set_up_run(int argc, char** argv, int first, RunSetup& r) {
     r.size_given = given.size_given;
 }
 
+// The run's sound if it asks for it (--sound, the board's sound), said in one line; a device that
+// cannot be opened, or a build without sound, is said too, and the run goes on silent.
+std::unique_ptr<SoundOut> open_run_sound(const Options& o) {
+    if (!o.sound) return nullptr;
+    platform::SoundSpec spec;
+    spec.device = o.sound_device;
+    std::string error;
+    std::unique_ptr<SoundOut> sound = platform::open_sound(spec, error);
+    if (sound) std::fprintf(stderr, "noneuclid: sound on '%s' (N mutes it).\n", spec.device.c_str());
+    else std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+    return sound;
+}
+
 // The lesson on the display r chose.
 int play_lesson_on(const files::Lesson& lesson, RunSetup& r) {
     {
@@ -151,6 +164,8 @@ int run_command(int argc, char** argv, int first) {
         status = a.finish();
     } else {
         compose_run(run, o, script, *display, shown.name, recording.file(), scores.get());
+        const std::unique_ptr<SoundOut> sound = open_run_sound(o);
+        run.loop->set_sound(sound.get());
         status = run.loop->run();
     }
     display.reset();  // the console back before the last lines

@@ -195,6 +195,11 @@ const OptionRow kOptions[] = {
      [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},
     {"--no-one-button", "", kRun, "every button does its own action (the default)", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.one_button = false; }},
+    {"--sound", "", kRun, "the game's sound: fire, hit, crash, level, game over, thrust; N mutes it (default off; the kiosk: "
+     "the board's; docs/sound.md)", nullptr, [](Args&, const std::string&, Options& o, Command) { o.sound = true; }},
+    {"--no-sound", "", kRun, "no sound", nullptr, [](Args&, const std::string&, Options& o, Command) { o.sound = false; }},
+    {"--sound-device", "NAME", kRun, "the ALSA device --sound plays on (default 'default'; 'aplay -L' lists them)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) { o.sound_device = a.value(opt); }},
     {"--font", "F", kPicture,
      "the HUD's font: builtin or a PSF console font file (default $NONEUCLID_FONT, else Terminus or Fixed from "
      "/usr/share/consolefonts, else builtin)",
@@ -364,6 +369,7 @@ void apply_board(const files::Board& b, Options& o) {
     o.hud = b.hud;
     o.large_hud = b.large_hud;
     o.one_button = b.one_button;
+    o.sound = b.sound;
     if (!render::parse_palette(b.palette, o.palette)) o.palette = render::Palette::scene;  // (checked when read)
     o.threads = b.threads;
     o.fps = b.fps;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/display.hpp"
+#include "app/sound.hpp"
 #include "render/canvas.hpp"
 #include "render/font.hpp"
 #include "files/board.hpp"
@@ -68,6 +69,18 @@ struct KioskSpec {
 // The kiosk (platform/linux/kiosk_display.cpp): the framebuffer, the console it owns, the
 // board's GPIO buttons and evdev keys. Prints what it opened, one line each, on stderr.
 std::unique_ptr<app::Display> open_kiosk(const KioskSpec& spec, std::string& error);
+
+// ---- sound (docs/sound.md) --------------------------------------------------------------
+
+struct SoundSpec {
+    std::string device = "default";  // an ALSA PCM name
+    int rate = 44100;                // samples a second, mono, 16 bits
+};
+// The game's sound (platform/linux/alsa_sound.cpp: ALSA; the page's is its own). It renders each
+// frame's world time of sound and never blocks: what does not fit the device's buffer is
+// dropped. Null, with one sentence in `error`, when the device cannot be opened or this build
+// has no sound; the run then goes on silent.
+std::unique_ptr<app::SoundOut> open_sound(const SoundSpec& spec, std::string& error);
 
 // ---- files ----------------------------------------------------------------------------------
 

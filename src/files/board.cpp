@@ -49,7 +49,7 @@ void read_board(const toml::table& root, Board& b) {
     if (root.get("models")) b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
-        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "palette", "large_hud", "one_button", "threads"});
+        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "palette", "large_hud", "one_button", "sound", "threads"});
         b.device = d.plain_string("device", b.device);
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
         b.scene = d.plain_string("scene", b.scene);
@@ -65,6 +65,7 @@ void read_board(const toml::table& root, Board& b) {
         b.hud = d.boolean("hud", b.hud);
         b.large_hud = d.boolean("large_hud", b.large_hud);
         b.one_button = d.boolean("one_button", b.one_button);
+        b.sound = d.boolean("sound", b.sound);
         b.palette = d.string("palette", b.palette);
         render::Palette palette{};
         if (!render::parse_palette(b.palette, palette))

@@ -14,6 +14,7 @@
 //     palette = "scene"       # scene, colour-blind, high-contrast
 //     large_hud = false       # the HUD's text twice as large
 //     one_button = false      # fire alone plays
+//     sound = false           # the game's sound (docs/sound.md)
 //     threads = 1             # drawing threads (1: the main thread only)
 //     [gpio]
 //     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
@@ -62,6 +63,7 @@ struct Board {
     std::string palette = "scene";  // render/palette.hpp's names
     bool large_hud = false;
     bool one_button = false;  // fire alone plays (docs/accessibility.md)
+    bool sound = false;       // the game's sound (docs/sound.md): off unless the board turns it on
     int threads = 1;
     // [gpio]
     std::vector<std::string> chips;

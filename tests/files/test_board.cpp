@@ -52,6 +52,7 @@ TEST(Boards, EveryPiBoardWiresTheEightButtonsToMatchingHeaderPins) {
         }
         EXPECT_EQ(gpio_buttons, 8);
         EXPECT_EQ(b.scene, "asteroids");  // the kiosk plays the game
+        EXPECT_FALSE(b.sound) << "a kiosk is silent until its board turns the sound on";
         for (Control c : {Control::thrust, Control::left, Control::right, Control::curvature_up, Control::curvature_down,
                           Control::preset, Control::reset, Control::fire}) {
             bool found = false;
@@ -108,6 +109,7 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
         {"[display]\npalette = \"sepia\"\n", "t.toml:2:11", "expected palette = \"scene\", \"colour-blind\" or \"high-contrast\", found \"sepia\""},
         {"[display]\nlarge_hud = 2\n", "t.toml:2:13", "large_hud"},
         {"[display]\none_button = \"yes\"\n", "t.toml:2:14", "one_button"},
+        {"[display]\nsound = \"on\"\n", "t.toml:2:9", "sound"},
         {"[gpio]\nchip = 7\n", "t.toml:2:8", "expected a string or a list of strings for 'chip'"},
         {"[attract]\nidle_seconds = -1\n", "t.toml:2:16", "'idle_seconds' must be from 0"},
         {"display = 3\n", "t.toml:1:11", "expected a [display] table"},
@@ -139,7 +141,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 std::string fields(const Board& b) {
     std::string s = b.name + "|" + b.file + "|" + b.device + "|" + std::to_string(b.fps) + "|" + b.scene + "|" + b.engine +
                     "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" + b.palette +
-                    std::to_string(b.large_hud) + std::to_string(b.one_button) + "|" +
+                    std::to_string(b.large_hud) + std::to_string(b.one_button) + std::to_string(b.sound) + "|" +
                     std::to_string(b.threads) + "|" + std::to_string(b.debounce_ms) + "|" + b.evdev_device + "|" +
                     std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds) + "|" + b.attract_lesson;
     for (const std::string& m : b.models) s += "|model " + m;
@@ -172,6 +174,7 @@ TEST(BoardOverride, KeysItSetsReplaceTheBoardsAndTheRestStays) {
     ASSERT_TRUE(files::overlay_board_file(path, b, e)) << e.to_string();
     EXPECT_EQ(b.threads, 3);
     EXPECT_FALSE(b.antialias);
+    EXPECT_FALSE(b.sound);
     EXPECT_EQ(b.idle_seconds, 300);
     // Everything else as rpi4.toml has it: set those three back and the boards are the same.
     b.threads = before.threads, b.antialias = before.antialias, b.idle_seconds = before.idle_seconds;
