@@ -6,6 +6,8 @@
 // the page can offer the recording and `noneuclid render --actions` can replay it.
 #include <emscripten.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -19,6 +21,34 @@
 namespace noneuclid::web {
 namespace {
 
+// The page's sound (docs/sound.md): each frame's samples from the synthesiser, which page.js
+// (page/sound.js) plays with Web Audio. Made when the page turns sound on, at its AudioContext's
+// rate; counts the cues it was given, for the page's tests.
+class WebSound final : public app::SoundOut {
+public:
+    explicit WebSound(int rate) : synth_(rate), samples_(static_cast<std::size_t>(synth_.rate() / 4)) {}
+    void frame(const app::SoundFrame& f, double seconds) override {
+        synth_.apply(f);
+        for (int i = 0; i < app::kCueCount; ++i) cues_ += f.has(static_cast<app::Cue>(i)) && !f.muted;
+        world_ += seconds;
+        const long long due = std::llround(world_ * synth_.rate());
+        count_ = static_cast<int>(std::min<long long>(due - due_, static_cast<long long>(samples_.size())));
+        due_ = due;
+        synth_.render(samples_.data(), count_);
+    }
+    const int16_t* samples() const { return samples_.data(); }
+    int count() const { return count_; }
+    long cues() const { return cues_; }
+
+private:
+    app::Synth synth_;
+    std::vector<int16_t> samples_;  // a quarter second at most a frame, made once
+    double world_ = 0;
+    long long due_ = 0;
+    int count_ = 0;
+    long cues_ = 0;
+};
+
 // One run: the page's display and recording, and the run composed on them (app/run.hpp), as
 // long as the run.
 struct Run {
@@ -31,6 +61,7 @@ struct Run {
     app::LiveRun live;
     files::Lesson lesson_data;                  // ?lesson=: the lesson played instead of live
     std::unique_ptr<app::LessonPlayer> lesson;
+    std::unique_ptr<WebSound> sound;            // while the page has sound on (not in a lesson)
     bool done = false;
 
     app::Session& session() { return lesson ? lesson->session() : *live.session; }
@@ -222,6 +253,23 @@ EMSCRIPTEN_KEEPALIVE void nw_resize(int width, int height) {
 }
 EMSCRIPTEN_KEEPALIVE int nw_width() { return g_run ? g_run->display->canvas().width() : 0; }
 EMSCRIPTEN_KEEPALIVE int nw_height() { return g_run ? g_run->display->canvas().height() : 0; }
+
+// Sound on at `rate` samples a second (the page's AudioContext's), or off (0): from the next
+// frame each frame's samples are at nw_sound_samples(), nw_sound_count() of them. 1 if on.
+EMSCRIPTEN_KEEPALIVE int nw_sound(int rate) {
+    if (!noneuclid::web::running() || g_run->lesson) return 0;
+    g_run->live.loop->set_sound(nullptr);
+    g_run->sound.reset();
+    if (rate < 8000 || rate > 192000) return 0;
+    g_run->sound = std::make_unique<noneuclid::web::WebSound>(rate);
+    g_run->live.loop->set_sound(g_run->sound.get());
+    return 1;
+}
+EMSCRIPTEN_KEEPALIVE const int16_t* nw_sound_samples() { return g_run && g_run->sound ? g_run->sound->samples() : nullptr; }
+EMSCRIPTEN_KEEPALIVE int nw_sound_count() { return g_run && g_run->sound ? g_run->sound->count() : 0; }
+// The cues the sound was given this run (muted ones not counted); 1 if muted now.
+EMSCRIPTEN_KEEPALIVE double nw_sound_cues() { return g_run && g_run->sound ? static_cast<double>(g_run->sound->cues()) : 0; }
+EMSCRIPTEN_KEEPALIVE int nw_sound_muted() { return g_run && g_run->session().sound().muted ? 1 : 0; }
 
 // The recording so far: the settings and every control as it took effect (app/script.hpp).
 EMSCRIPTEN_KEEPALIVE const char* nw_recording() {

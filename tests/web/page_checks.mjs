@@ -261,4 +261,45 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     expect(message.includes("'nosuch'") && message.includes('curvature'), `the message: '${message}'`);
     await bad.page.close();
   });
+
+  await check('sound: off by default; the sound button and ?sound=on turn it on; the engine then gets the game\'s cues, and N mutes them', async () => {
+    const text = (page) => page.evaluate(`(() => { const b = document.getElementById('sound'); return b.textContent + '|' + b.getAttribute('aria-pressed'); })()`);
+    const off = await open('scene=asteroids&size=400x240');
+    expect(off.started === true, 'the page did not start');
+    await waitFrames(off.page, 3);
+    let s = (await state(off.page)).sound;
+    expect(s.on === false && s.cues === 0 && s.played === 0, `by default: ${JSON.stringify(s)}`);
+    expect(await text(off.page) === 'sound: off|false', `the button says ${await text(off.page)}`);
+    await off.page.evaluate(`document.getElementById('sound').click()`);
+    await waitFrames(off.page, 2);
+    s = (await state(off.page)).sound;
+    expect(s.on === true && s.context !== 'none', `after a click: ${JSON.stringify(s)}`);
+    expect(await text(off.page) === 'sound: on|true', `the button says ${await text(off.page)}`);
+    await off.page.evaluate(`document.getElementById('sound').click()`);
+    expect((await state(off.page)).sound.on === false && await text(off.page) === 'sound: off|false', 'a second click did not turn it off');
+    await off.page.close();
+
+    const {page, started} = await open('scene=asteroids&size=400x240&sound=on');
+    expect(started === true, '?sound=on did not start');
+    expect((await state(page)).message === '', `?sound=on said: ${(await state(page)).message}`);
+    expect((await state(page)).sound.on === true && await text(page) === 'sound: on|true', '?sound=on is not on');
+    const hold = async (key, code, keyCode, frames) => {
+      await page.key('keyDown', key, code, keyCode);
+      await waitFrames(page, frames);
+      await page.key('keyUp', key, code, keyCode);
+    };
+    await hold(' ', 'Space', 32, 2);  // a new game
+    await waitFrames(page, 5);
+    await hold(' ', 'Space', 32, 70);  // fire held: a shot every 0.2 s
+    s = (await state(page)).sound;
+    expect(s.cues >= 4 && s.muted === false, `after 70 frames of fire: ${JSON.stringify(s)}`);
+    await hold('n', 'KeyN', 78, 2);
+    const before = (await state(page)).sound;
+    expect(before.muted === true, `N did not mute: ${JSON.stringify(before)}`);
+    await hold(' ', 'Space', 32, 40);
+    s = (await state(page)).sound;
+    expect(s.cues === before.cues, `muted, yet ${s.cues - before.cues} more cues`);
+    expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+    await page.close();
+  });
 }

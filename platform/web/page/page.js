@@ -28,6 +28,7 @@
   let kTarget = null, kHeld = -1;  // the K slider: the K it steers to, the control held for it
   let linkDue = 0;          // when the address may next be rewritten (linkState)
   let sliderDown = false;   // a pointer holds the K slider: it shows its own value, not K
+  const sound = new NoneuclidSound($('sound'), params.get('sound') === 'on');  // (sound.js)
   const K_KEYS = ['hyperbolic', 'flat', 'spherical', 'preset', 'curvature_up', 'curvature_down', 'reset'];
 
   // ---- the engine's display: frames in, pixels out ------------------------------------------
@@ -81,6 +82,8 @@
         words.push('--lesson', await put(value, `no lesson file ${value} beside the page: put it there, or name a built-in lesson.`));
       } else if (key === 'actions') {
         words.push('--actions', await put(value, `no actions file ${value} beside the page: put it there, or give its address.`));
+      } else if (key === 'sound') {
+        continue;  // the page's own (sound.js)
       } else if (FLAGS.has(key)) {
         words.push(value === 'off' ? '--no-' + key : '--' + key);
       } else {
@@ -128,6 +131,7 @@
     const scene = words[words.lastIndexOf('--scene') + 1];
     if (words.includes('--scene') && [...$('scene').options].some((o) => o.value === scene)) $('scene').value = scene;
     running = true;
+    sound.attach(mod);
     const mine = generation;
     requestAnimationFrame(() => frame(mine));
     return true;
@@ -138,6 +142,7 @@
     steerCurvature();
     const t0 = performance.now();
     const more = mod._nw_tick();
+    sound.frame();
     tickMs.push(performance.now() - t0);
     if (tickMs.length > 60) tickMs.shift();
     showState();
@@ -385,6 +390,7 @@
       pixels: [canvas.width, canvas.height], hudScale: sizeChosen ? pageSize().hudScale : 1,
       lessonStep: mod ? mod._nw_lesson_step() : 0,
       message: $('message').hidden ? '' : $('message').textContent,
+      sound: sound.state(),
     }),
     // Resolves when the run has ended: stop() ends it after the frame being drawn.
     ended: () => new Promise((resolve) => running ? waiting.push(resolve) : resolve()),
