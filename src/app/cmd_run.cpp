@@ -159,6 +159,8 @@ int run_command(int argc, char** argv, int first) {
     int status = 0;
     if (attract_lesson) {  // attract mode plays a lesson (app/lesson.hpp)
         AttractLessonRun a(*attract_lesson, o, *display, shown.name, scores.get());
+        const std::unique_ptr<SoundOut> sound = open_run_sound(o);
+        a.set_sound(sound.get());
         while (a.tick()) {
         }
         status = a.finish();

@@ -99,6 +99,7 @@ void AttractLessonRun::start_run() {
     Options o = o_;
     prepare_run(run_, o);
     compose_run(run_, o, script_, display_, name_, nullptr, scores_);
+    run_.loop->set_sound(sound_);
 }
 
 bool AttractLessonRun::tick() {

@@ -58,6 +58,11 @@ public:
     int finish() { return status_; }
     bool in_lesson() const { return player_ != nullptr; }
     const Session& session() const { return player_ ? player_->session() : *run_.session; }
+    // The visitors' runs' sound (the lesson, attract mode, is silent); it must outlive this.
+    void set_sound(SoundOut* sound) {
+        sound_ = sound;
+        if (!player_) run_.loop->set_sound(sound);
+    }
 
 private:
     void start_run();
@@ -70,6 +75,7 @@ private:
     Script script_;
     LiveRun run_;
     std::unique_ptr<LessonPlayer> player_;
+    SoundOut* sound_ = nullptr;
     long frames_ = 0;
     int status_ = 0;
 };
