@@ -31,7 +31,12 @@ double clamp1(double x) { return x < -1 ? -1 : (x > 1 ? 1 : x); }
 const char* cue_name(Cue c) { return kNames[static_cast<int>(c)]; }
 const CueSound& cue_sound(Cue c) { return kCues[static_cast<int>(c)]; }
 
-Synth::Synth(int rate) : rate_(rate > 0 ? rate : 44100) {}
+Synth::Synth(int rate) : rate_(rate > 0 ? rate : 44100) {
+    for (int i = 0; i < kCueCount; ++i) {
+        low_pass_[i] = low_pass(kCues[i].start_hz, rate_);
+        noise_gain_[i] = noise_gain(low_pass_[i]);
+    }
+}
 
 void Synth::play(Cue c) {
     if (muted_) return;
@@ -49,7 +54,10 @@ void Synth::play(Cue c) {
     }
     *v = Voice{};
     v->on = true, v->cue = c, v->age = ++started_;
-    v->length = static_cast<long>(std::lround(cue_sound(c).seconds * rate_));
+    const CueSound& s = cue_sound(c);
+    v->length = static_cast<long>(std::lround(s.seconds * rate_));
+    v->hz = s.start_hz;  // f(t) = start (end / start)^(t / length): a constant factor a sample
+    v->glide = std::pow(s.end_hz / s.start_hz, 1.0 / static_cast<double>(v->length));
 }
 
 void Synth::set_muted(bool m) {
@@ -90,15 +98,14 @@ double Synth::sample(Voice& v) {
     const CueSound& s = cue_sound(v.cue);
     double x = 0;
     if (s.wave == CueSound::noise) {
-        const double a = low_pass(s.start_hz, rate_);
-        v.low += a * (noise() - v.low);
-        x = clamp1(v.low * noise_gain(a));
+        const int i = static_cast<int>(v.cue);
+        v.low += low_pass_[i] * (noise() - v.low);
+        x = clamp1(v.low * noise_gain_[i]);
     } else {
         x = s.wave == CueSound::square ? (v.phase < 0.5 ? 1 : -1) : std::sin(kTwoPi * v.phase);
-        const double along = static_cast<double>(v.t) / static_cast<double>(v.length);
-        const double hz = s.start_hz * std::pow(s.end_hz / s.start_hz, along);
-        v.phase += hz / rate_;
+        v.phase += v.hz / rate_;
         v.phase -= std::floor(v.phase);
+        v.hz *= v.glide;
     }
     x *= s.level * envelope(v);
     if (++v.t >= v.length) v.on = false;
@@ -107,7 +114,8 @@ double Synth::sample(Voice& v) {
 
 void Synth::render(int16_t* out, int frames) {
     const CueSound& th = cue_sound(Cue::thrust);
-    const double a = low_pass(th.start_hz, rate_), g = noise_gain(a);
+    const int t = static_cast<int>(Cue::thrust);
+    const double a = low_pass_[t], g = noise_gain_[t];
     const double fade = 1.0 / (th.attack_s * rate_);
     for (int i = 0; i < frames; ++i) {
         double mix = 0;
@@ -118,8 +126,7 @@ void Synth::render(int16_t* out, int frames) {
             thrust_low_ += a * (noise() - thrust_low_);
             mix += clamp1(thrust_low_ * g) * th.level * thrust_gain_;
         }
-        const double s = std::lround(clamp1(mix) * 32767);
-        out[i] = static_cast<int16_t>(s);
+        out[i] = static_cast<int16_t>(std::lround(clamp1(mix) * 32767));
     }
 }
 

@@ -63,6 +63,7 @@ private:
         Cue cue = Cue::fire;
         long t = 0, length = 0;  // samples played, of the cue's length (thrust: -1, held)
         double phase = 0;         // cycles, in [0, 1)
+        double hz = 0, glide = 1; // a tone's frequency now, and its factor a sample
         double low = 0;           // the noise's low-pass state
         long age = 0;             // when it started, to replace the oldest
     };
@@ -71,6 +72,7 @@ private:
     double noise();
 
     int rate_;
+    double low_pass_[kCueCount], noise_gain_[kCueCount];  // each noise cue's filter, made once
     Voice voices_[kVoices];
     bool thrust_ = false, muted_ = false;
     double thrust_gain_ = 0;  // the hum fades in and out (20 ms) instead of clicking
