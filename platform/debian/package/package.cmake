@@ -6,9 +6,10 @@
 # of the same names, which install under /usr: the paths compiled into the program and the unit
 # are the package's.
 #
-# Depends come from the binary (dpkg-shlibdeps: libc, libstdc++, and libgpiod, libpng, zlib and
-# X11 where linked shared, as in the amd64 build; the cross builds link libgpiod statically and
-# have no PNG, zlib or X11), plus systemd, whose sysusers and tmpfiles the postinst runs.
+# Depends come from the binary (dpkg-shlibdeps: libc, libstdc++, and libgpiod, libpng, zlib,
+# X11 and libasound where linked shared, as in the amd64 build; the cross builds link libgpiod
+# statically and have no PNG, zlib, X11 or sound), plus systemd, whose sysusers and tmpfiles the
+# postinst runs.
 
 # Debian's name for the architecture built for.
 set(noneuclid_deb_arch_aarch64 arm64)
