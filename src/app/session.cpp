@@ -292,7 +292,12 @@ private:
                 case world::GameEvent::start: started = true; break;
             }
         if (g.next_shot() > next_shot && !started) sound_.add(Cue::fire);
-        sound_.thrust = world_.held(world::Action::thrust);
+        // The hum is the ship's engine: none while there is no ship (the "press fire" screen).
+        for (const auto& b : world_.bodies)
+            if (b.desc->controlled && b.active) {
+                sound_.thrust = world_.held(world::Action::thrust);
+                break;
+            }
     }
     render::HudGame hud_game() const {
         render::HudGame h;

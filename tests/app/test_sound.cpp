@@ -205,6 +205,8 @@ TEST(Sound, TheSessionCuesFireAndHitInTheStepsTheGameDoesThem) {
         if (f == 30) s->queue({world::Control::fire, true});   // held: a shot every cooldown
         if (f == 100) s->queue({world::Control::thrust, true});
         if (f == 130) s->queue({world::Control::thrust, false});
+        if (f == 5) s->queue({world::Control::thrust, true});  // no ship yet: no hum
+        if (f == 8) s->queue({world::Control::thrust, false});
         s->step();
         line.clear();
         s->dump(320, 200, line);
@@ -213,14 +215,15 @@ TEST(Sound, TheSessionCuesFireAndHitInTheStepsTheGameDoesThem) {
         EXPECT_EQ(c.has(Cue::fire), now > bullet) << "frame " << f << ": " << line;
         EXPECT_EQ(c.has(Cue::hit), line.find("{\"hit\":") != std::string::npos) << "frame " << f;
         EXPECT_EQ(c.has(Cue::crash), line.find("{\"crash\":") != std::string::npos) << "frame " << f;
-        EXPECT_EQ(c.thrust, f >= 100 && f < 130) << "frame " << f;
+        const bool ship = line.find("\"kind\":\"ship\"") != std::string::npos;  // (dump leaves an inactive body out)
+        EXPECT_EQ(c.thrust, f >= 100 && f < 130 && ship) << "frame " << f;
         EXPECT_FALSE(c.muted);
         bullet = std::max(bullet, now);
         fires += c.has(Cue::fire), hits += c.has(Cue::hit), thrusts += c.thrust;
     }
     EXPECT_GT(fires, 5);
     EXPECT_GT(hits, 0);
-    EXPECT_EQ(thrusts, 30);
+    EXPECT_GT(thrusts, 0);
     // The mute key turns the sound off and on.
     s->queue({world::Control::mute, true});
     s->step();
