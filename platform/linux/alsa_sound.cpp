@@ -89,6 +89,14 @@ std::unique_ptr<app::SoundOut> open_sound(const SoundSpec& spec, std::string& er
                            static_cast<unsigned>(spec.rate), 1, kLatencyUs);
     snd_pcm_uframes_t buffer = 0, period = 0;
     if (e >= 0) e = snd_pcm_get_params(pcm, &buffer, &period);
+    // The device starts playing once the headroom and a frame are in (snd_pcm_set_params waits
+    // for a full buffer): the sound is then about half a buffer behind the picture, not a whole.
+    snd_pcm_sw_params_t* sw = nullptr;
+    if (e >= 0 && snd_pcm_sw_params_malloc(&sw) >= 0) {
+        if (snd_pcm_sw_params_current(pcm, sw) >= 0 && snd_pcm_sw_params_set_start_threshold(pcm, sw, buffer / 2) >= 0)
+            snd_pcm_sw_params(pcm, sw);
+        snd_pcm_sw_params_free(sw);
+    }
     if (e < 0 || buffer == 0) {
         error = "cannot play 16-bit mono sound at " + std::to_string(spec.rate) + " Hz on '" + spec.device +
                 "': " + (e < 0 ? snd_strerror(e) : "no buffer") + fix + ".";
