@@ -59,6 +59,7 @@ struct Options {
     std::string lesson;         // run: play this lesson (a built-in's name or a file) instead of a scene
     std::string attract_lesson; // run: attract mode plays this lesson until a button is pressed
     bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
+    std::string language;       // the HUD's and lessons' language: en, de, fr; "" the locale's (resolve_language)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)
     long best = 0;              // the game's high score shown before any game ends (run: the table's)

@@ -14,6 +14,7 @@
 //     palette = "scene"       # scene, colour-blind, high-contrast
 //     large_hud = false       # the HUD's text twice as large
 //     one_button = false      # fire alone plays
+//     language = ""           # en, de, fr; empty: the locale's
 //     threads = 1             # drawing threads (1: the main thread only)
 //     [gpio]
 //     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
@@ -61,6 +62,7 @@ struct Board {
     bool hud = true;
     std::string palette = "scene";  // render/palette.hpp's names
     bool large_hud = false;
+    std::string language;  // en, de, fr ("" the locale's)
     bool one_button = false;  // fire alone plays (docs/accessibility.md)
     int threads = 1;
     // [gpio]

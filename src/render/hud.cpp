@@ -3,8 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 
 #include "render/raster.hpp"
+
+using noneuclid::lang::Text;
 
 namespace noneuclid::render {
 
@@ -24,10 +27,11 @@ void life(const Canvas& c, int x, int y, int size, Rgb color) {
 // The game's corner (score, level, lives) and its screen in the middle.
 void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, int margin, int line, Rgb color, Rgb dim) {
     const HudGame& g = h.game;
-    char text[64];
-    std::snprintf(text, sizeof text, "SCORE %ld", g.score);
+    const auto t = [&h](Text name) { return lang::text(name, h.language); };
+    char text[96];
+    std::snprintf(text, sizeof text, t(Text::score), g.score);
     draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin, text, color, scale);
-    std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+    std::snprintf(text, sizeof text, t(Text::level), g.level);
     draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin + line, text, dim, scale);
     const int size = font.height * scale;
     for (int i = 0; i < g.lives && i < 10; ++i)
@@ -37,25 +41,25 @@ void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, i
     switch (g.screen) {
         case HudGame::none: return;
         case HudGame::ready:
-            centred(c, font, mid, y, "PRESS FIRE", color, big);
+            centred(c, font, mid, y, t(Text::press_fire), color, big);
             y += font.height * big + line;
-            std::snprintf(text, sizeof text, "BEST %ld", g.best);
+            std::snprintf(text, sizeof text, t(Text::best), g.best);
             centred(c, font, mid, y, text, dim, scale);
             return;
         case HudGame::over:
-            centred(c, font, mid, y, "GAME OVER", color, big);
+            centred(c, font, mid, y, t(Text::game_over), color, big);
             y += font.height * big + line;
-            std::snprintf(text, sizeof text, g.new_best ? "SCORE %ld  NEW BEST" : "SCORE %ld", g.score);
+            std::snprintf(text, sizeof text, t(g.new_best ? Text::score_new_best : Text::score), g.score);
             centred(c, font, mid, y, text, color, scale);
             if (!g.new_best) {
-                std::snprintf(text, sizeof text, "BEST %ld", g.best);
+                std::snprintf(text, sizeof text, t(Text::best), g.best);
                 centred(c, font, mid, y + line, text, dim, scale);
             }
             return;
         case HudGame::new_level:
-            std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+            std::snprintf(text, sizeof text, t(Text::level), g.level);
             centred(c, font, mid, y, text, color, big);
-            centred(c, font, mid, y + font.height * big + line, curvature_word(h.K), dim, scale);
+            centred(c, font, mid, y + font.height * big + line, curvature_word(h.K, h.language), dim, scale);
             return;
     }
 }
@@ -100,15 +104,24 @@ int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char
 
 }  // namespace
 
-const char* curvature_word(double K) { return K > 1e-5 ? "spherical" : (K < -1e-5 ? "hyperbolic" : "flat"); }
+const char* curvature_word(double K, lang::Language language) {
+    return lang::text(K > 1e-5 ? Text::spherical : (K < -1e-5 ? Text::hyperbolic : Text::flat), language);
+}
+
+const char* projection_words(geo::Projection p, lang::Language language) {
+    constexpr Text kWords[] = {Text::equidistant, Text::stereographic, Text::gnomonic, Text::orthographic, Text::lambert};
+    static_assert(std::size(kWords) == std::size(geo::kProjections), "a projection without its words");
+    const auto i = static_cast<std::size_t>(p);
+    return i < std::size(kWords) ? lang::text(kWords[i], language) : geo::projection_name(p);
+}
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {
     const int scale = (h.scale > 0 ? h.scale : c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
     const int margin = 6 * scale, line = font.height * scale + 2 * scale;
-    char text[96];
+    char text[128];
     // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)
     std::snprintf(text, sizeof text, h.K != 0 && std::fabs(h.K) < 5e-4 ? "K = %+.2e  %s" : "K = %+.3f  %s", h.K,
-                  curvature_word(h.K));
+                  curvature_word(h.K, h.language));
     draw_text(c, font, margin, margin, text, color, scale);
     int y = margin + line;
     if (h.fps > 0) {

@@ -10,8 +10,13 @@
   const context = canvas.getContext('2d');
   const params = new URLSearchParams(location.search);
   const FLAGS = new Set(['aa', 'hud', 'stats', 'large-hud', 'one-button']);  // `aa`, `aa=on` or `aa=off`
-  const TOUCH = [['thrust', '▲ thrust'], ['left', '◀ left'], ['right', 'right ▶'], ['curvature_down', 'K −'],
-                 ['curvature_up', 'K +'], ['preset', 'preset K'], ['fire', 'fire']];
+  // The touch buttons: control, and the label's text (lang/texts.hpp) or the label itself.
+  const TOUCH = [['thrust', 'page_thrust'], ['left', 'page_left'], ['right', 'page_right'], ['curvature_down', 'K −'],
+                 ['curvature_up', 'K +'], ['preset', 'page_preset'], ['fire', 'page_fire']];
+  let texts = {};           // the catalogue in the page's language: name -> text (nw_texts)
+  const t = (name) => texts[name] ?? name;
+  // A text with printf-style %d and %s, filled in order.
+  const fill = (name, ...values) => t(name).replace(/%[ds]/g, () => String(values.shift()));
 
   let mod = null;           // the engine (createNoneuclid)
   let generation = 0;       // the run the animation frames belong to
@@ -50,6 +55,27 @@
     const data = context.getImageData(0, 0, width, height).data;
     mod.HEAPU8.set(data, pointer);
     return true;
+  }
+
+  // ---- the page's language ---------------------------------------------------------------
+  // The address's ?lang=, else the browser's first language (English where the catalogue has
+  // none): the page's words from the engine's catalogue, and its HUD's through --lang. A bad
+  // ?lang= is the engine's to refuse, in its one sentence.
+  function labelPage() {
+    const want = params.get('lang') || navigator.language || 'en';
+    for (const line of mod.UTF8ToString(call('nw_texts', 'number', [want])).split('\n')) {
+      const tab = line.indexOf('\t');
+      if (tab > 0) texts[line.slice(0, tab)] = line.slice(tab + 1);
+    }
+    document.documentElement.lang = texts.lang;
+    for (const e of document.querySelectorAll('[data-text]')) e.textContent = t(e.dataset.text);
+    const choice = $('language');
+    choice.value = texts.lang;
+    choice.addEventListener('change', () => {
+      const link = new URLSearchParams(location.search);
+      link.set('lang', choice.value);
+      location.search = '?' + link.toString();
+    });
   }
 
   // ---- runs ---------------------------------------------------------------------------------
@@ -109,7 +135,7 @@
     $('download').hidden = true;
     if (call('nw_start', 'number', [words.join('\n')]) !== 0) {
       say(mod.UTF8ToString(mod._nw_message()));
-      $('status').textContent = 'not running';
+      $('status').textContent = t('page_not_running');
       return false;
     }
     say('');
@@ -121,7 +147,7 @@
     const game = mod._nw_has_game() === 1;
     const fire = document.querySelector('#touch button[data-control=fire]');
     if (fire) fire.hidden = !game;
-    $('help-fire').hidden = !game;
+    $('help').textContent = t(game ? 'page_help_game' : 'page_help');
     image = null;
     tickMs.length = 0;
     $('engine').value = mod.UTF8ToString(mod._nw_engine());
@@ -153,7 +179,7 @@
     if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
     link.href = URL.createObjectURL(new Blob([mod.UTF8ToString(mod._nw_recording())], {type: 'text/plain'}));
     link.hidden = false;
-    $('status').textContent += ' · ended';
+    $('status').textContent += ' · ' + t('page_ended');
     while (waiting.length) waiting.shift()();
   }
 
@@ -165,8 +191,8 @@
     if (document.activeElement !== $('projection')) $('projection').value = projection;
     const ms = tickMs.reduce((a, b) => a + b, 0) / Math.max(tickMs.length, 1);
     linkState(K, projection);
-    $('status').textContent = `frame ${mod._nw_frame()} · K = ${K.toFixed(3)} · ${projection} · ` +
-        `${mod.UTF8ToString(mod._nw_engine())} engine · ${ms.toFixed(2)} ms a frame`;
+    $('status').textContent = fill('page_status', mod._nw_frame(), K.toFixed(3), projection,
+                                   mod.UTF8ToString(mod._nw_engine()), ms.toFixed(2));
   }
 
   // The address says what is seen (scene, K, projection, engine), so that a copied link shows it:
@@ -184,6 +210,7 @@
     link.set('curvature', String(Math.round(K * 1000) / 1000));
     link.set('projection', projection);
     link.set('engine', mod.UTF8ToString(mod._nw_engine()));
+    link.set('lang', texts.lang);
     const query = '?' + link.toString();
     if (query !== location.search) history.replaceState(null, '', query);
   }
@@ -230,7 +257,7 @@
       if (c < 0) continue;  // a control this build has not
       const b = document.createElement('button');
       b.type = 'button';
-      b.textContent = label;
+      b.textContent = t(label);
       b.dataset.control = name;
       let down = false;
       const press = (e) => {
@@ -328,7 +355,7 @@
       else document.documentElement.requestFullscreen().catch((e) => say(`full screen was refused: ${e.message}`));
     });
     document.addEventListener('fullscreenchange', () => {
-      full.textContent = document.fullscreenElement ? 'leave full screen' : 'full screen';
+      full.textContent = t(document.fullscreenElement ? 'page_leave_full_screen' : 'page_full_screen');
     });
     window.addEventListener('blur', () => {
       for (const c of keysHeld.values()) input(c, false);
@@ -413,6 +440,7 @@
     printErr: (text) => console.warn(text),
   }).then(async (m) => {
     mod = m;
+    labelPage();
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
     for (const name of new Set(TOUCH.map(([name]) => name).concat(['projection'], K_KEYS)))
       control[name] = call('nw_control', 'number', [name]);
@@ -421,9 +449,10 @@
     try {
       startWords = await wordsOfUrl();
       if (!params.has('size') && !params.has('actions')) startWords.push('--size', ...defaultSize());
+      if (!params.has('lang') && !params.has('actions')) startWords.push('--lang', texts.lang);
     } catch (e) {
       say(e.message);
-      $('status').textContent = 'not running';
+      $('status').textContent = t('page_not_running');
       startWords = ['--size', ...defaultSize()];  // said once: the menus start runs without the address
       readyResolve(false);
       return;
