@@ -7,7 +7,7 @@ import path from 'node:path';
 
 const VIEWPORTS = [{width: 844, height: 390, dpr: 3}, {width: 390, height: 844, dpr: 3}, {width: 1280, height: 800, dpr: 1}];
 
-export async function pageChecks({browser, base, work, check, expect, sleep, waitFrames}) {
+export async function pageChecks({browser, base, work, check, expect, sleep, waitFrames, render, pngDiff, canvasPng}) {
   const open = async (query, viewport = null) => {
     const page = await browser.newPage();
     await page.open(`${base}?${query}`, viewport);
@@ -148,6 +148,49 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
       expect(m.help.includes('Space fires') === game, `?${query}: the help says '${m.help}'`);
       await page.close();
     }
+  });
+
+  // The page's words and the HUD's in German and French (lang/texts.hpp): the labels come from
+  // the catalogue, the canvas equals render of the run's recording (which keeps the language),
+  // and the same recording replayed in English differs (so the HUD's words did change).
+  for (const [code, stop, help, fire] of [['de', 'anhalten', 'Leertaste', 'Feuer'], ['fr', 'arrêter', 'Espace tire', 'feu']]) {
+    await check(`?lang=${code}: the page's words and the HUD in ${code}; the canvas equals render of its recording`, async () => {
+      const {page, started} = await open(`lang=${code}&scene=asteroids&size=480x288`);
+      expect(started === true, 'the page did not start');
+      await waitFrames(page, 10);
+      await page.evaluate('window.noneuclid.stop()');
+      const m = await page.evaluate(`(() => ({
+        lang: document.documentElement.lang, stop: document.getElementById('stop').textContent,
+        help: document.getElementById('help').textContent, choice: document.getElementById('language').value,
+        fire: document.querySelector('#touch button[data-control=fire]').textContent}))()`);
+      expect(m.lang === code && m.choice === code, `the page's language is ${m.lang} (chosen: ${m.choice}), not ${code}`);
+      expect(m.stop === stop, `the stop button says '${m.stop}', not '${stop}'`);
+      expect(m.help.includes(help), `the help says '${m.help}', without '${help}'`);
+      expect(m.fire === fire, `the fire button says '${m.fire}', not '${fire}'`);
+      const shot = path.join(work, `lang-${code}-page.png`), rec = path.join(work, `lang-${code}.rec`);
+      await canvasPng(page, shot);
+      const text = await page.evaluate('window.noneuclid.recording()');
+      fs.writeFileSync(rec, text);
+      expect(text.includes(`lang ${code}`), `the recording does not keep the language:\n${text.slice(0, 600)}`);
+      render(['--actions', rec, '--out', path.join(work, `lang-${code}-render.png`)]);
+      const same = pngDiff(shot, path.join(work, `lang-${code}-render.png`));
+      expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
+      render(['--actions', rec, '--lang', 'en', '--out', path.join(work, `lang-${code}-en.png`)]);
+      expect(pngDiff(shot, path.join(work, `lang-${code}-en.png`)).status === 1,
+             'the same recording in English draws the same HUD: the language did not reach it');
+      expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+      await page.close();
+    });
+  }
+
+  await check('?lang=xx is refused in one sentence; the page stays in English', async () => {
+    const {page, started} = await open('lang=xx&scene=kiosk');
+    expect(started === false, 'the page started with ?lang=xx');
+    const s = await state(page);
+    expect(s.message === "--lang takes en, de or fr, not 'xx'.", `the page says '${s.message}'`);
+    const stop = await page.evaluate("document.getElementById('stop').textContent");
+    expect(stop === 'stop', `the stop button says '${stop}'`);
+    await page.close();
   });
 
   await check('?palette=high-contrast&large-hud: a black disc and the HUD twice as tall; a copied link keeps both', async () => {
