@@ -13,10 +13,8 @@
   // The touch buttons: control, and the label's text (lang/texts.hpp) or the label itself.
   const TOUCH = [['thrust', 'page_thrust'], ['left', 'page_left'], ['right', 'page_right'], ['curvature_down', 'K −'],
                  ['curvature_up', 'K +'], ['preset', 'page_preset'], ['fire', 'page_fire']];
-  let texts = {};           // the catalogue in the page's language: name -> text (nw_texts)
-  const t = (name) => texts[name] ?? name;
-  // A text with printf-style %d and %s, filled in order.
-  const fill = (name, ...values) => t(name).replace(/%[ds]/g, () => String(values.shift()));
+  const language = window.noneuclidLanguage;  // the page's words (page_lang.js)
+  const {t, fill} = language;
 
   let mod = null;           // the engine (createNoneuclid)
   let generation = 0;       // the run the animation frames belong to
@@ -55,27 +53,6 @@
     const data = context.getImageData(0, 0, width, height).data;
     mod.HEAPU8.set(data, pointer);
     return true;
-  }
-
-  // ---- the page's language ---------------------------------------------------------------
-  // The address's ?lang=, else the browser's first language (English where the catalogue has
-  // none): the page's words from the engine's catalogue, and its HUD's through --lang. A bad
-  // ?lang= is the engine's to refuse, in its one sentence.
-  function labelPage() {
-    const want = params.get('lang') || navigator.language || 'en';
-    for (const line of mod.UTF8ToString(call('nw_texts', 'number', [want])).split('\n')) {
-      const tab = line.indexOf('\t');
-      if (tab > 0) texts[line.slice(0, tab)] = line.slice(tab + 1);
-    }
-    document.documentElement.lang = texts.lang;
-    for (const e of document.querySelectorAll('[data-text]')) e.textContent = t(e.dataset.text);
-    const choice = $('language');
-    choice.value = texts.lang;
-    choice.addEventListener('change', () => {
-      const link = new URLSearchParams(location.search);
-      link.set('lang', choice.value);
-      location.search = '?' + link.toString();
-    });
   }
 
   // ---- runs ---------------------------------------------------------------------------------
@@ -210,7 +187,7 @@
     link.set('curvature', String(Math.round(K * 1000) / 1000));
     link.set('projection', projection);
     link.set('engine', mod.UTF8ToString(mod._nw_engine()));
-    link.set('lang', texts.lang);
+    link.set('lang', language.code());
     const query = '?' + link.toString();
     if (query !== location.search) history.replaceState(null, '', query);
   }
@@ -440,7 +417,7 @@
     printErr: (text) => console.warn(text),
   }).then(async (m) => {
     mod = m;
-    labelPage();
+    language.load(mod, params);
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
     for (const name of new Set(TOUCH.map(([name]) => name).concat(['projection'], K_KEYS)))
       control[name] = call('nw_control', 'number', [name]);
@@ -449,7 +426,7 @@
     try {
       startWords = await wordsOfUrl();
       if (!params.has('size') && !params.has('actions')) startWords.push('--size', ...defaultSize());
-      if (!params.has('lang') && !params.has('actions')) startWords.push('--lang', texts.lang);
+      if (!params.has('lang') && !params.has('actions')) startWords.push('--lang', language.code());
     } catch (e) {
       say(e.message);
       $('status').textContent = t('page_not_running');
