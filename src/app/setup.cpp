@@ -139,8 +139,10 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.language = resolve_language(o);
     using lang::Text;
     const bool keys = legend == "keys";
+    // (The kiosk's fire button does something only in the game or with a scene's instruments.)
+    const bool fire = scene.game.on || !scene.measures.empty();
     Text words = scene.zoom.on() ? (keys ? Text::legend_zoom_keys : Text::legend_zoom_buttons)
-                                 : (keys ? Text::legend_keys : Text::legend_buttons);
+                                 : (keys ? Text::legend_keys : fire ? Text::legend_buttons : Text::legend_buttons_no_fire);
     if (o.one_button) words = scene.game.on ? Text::legend_one_button_game : Text::legend_one_button;
     so.legend = lang::text(words, so.language);
     so.attract.idle_seconds = o.attract;

@@ -29,6 +29,7 @@
     /* the legends: the desktop's keys, the kiosk's buttons, the zoom's, one button, attract */    \
     X(legend_keys, "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
     X(legend_buttons, "thrust  left/right  fire  curvature +/-  preset  reset")                     \
+    X(legend_buttons_no_fire, "thrust  left/right  curvature +/-  preset  reset")                   \
     X(legend_zoom_keys, "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
     X(legend_zoom_buttons, "thrust  left/right  zoom +/-  preset  reset")                           \
     X(legend_one_button_game, "one button: hold fire to thrust, tap to fire")                       \
