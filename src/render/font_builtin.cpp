@@ -194,44 +194,39 @@ constexpr void compose(const Composed& g, GlyphTable& table, Drawn& drawn) {
     drawn[std::size_t(code)] = true;
 }
 
-constexpr GlyphTable build_builtin() {
+// The table, and which of its glyphs are drawn (the rest are '?').
+struct Built {
     GlyphTable table{};
     Drawn drawn{};
-    for (const ArtBlock& block : kArt) draw_block(block, table, drawn);
-    for (const ArtBlock& block : kLatinArt) draw_block(block, table, drawn);
-    for (const Composed& g : kComposed) compose(g, table, drawn);
+};
+
+constexpr Built build_builtin() {
+    Built b;
+    for (const ArtBlock& block : kArt) draw_block(block, b.table, b.drawn);
+    for (const ArtBlock& block : kLatinArt) draw_block(block, b.table, b.drawn);
+    for (const Composed& g : kComposed) compose(g, b.table, b.drawn);
     for (int code = 32; code <= 126; ++code)
-        if (!drawn[std::size_t(code)])
+        if (!b.drawn[std::size_t(code)])
             throw "a printable ASCII glyph is missing";
     // The rest (control characters, DEL, Latin-1 not drawn here) show '?'.
     for (int code = 0; code < kBuiltinGlyphs; ++code) {
-        if (drawn[std::size_t(code)])
+        if (b.drawn[std::size_t(code)])
             continue;
         for (int r = 0; r < kCellHeight; ++r)
-            table[std::size_t(code * kCellHeight + r)] = table[std::size_t('?' * kCellHeight + r)];
+            b.table[std::size_t(code * kCellHeight + r)] = b.table[std::size_t('?' * kCellHeight + r)];
     }
-    return table;
+    return b;
 }
 
-constexpr Drawn drawn_glyphs() {
-    Drawn drawn{};
-    GlyphTable scratch{};
-    for (const ArtBlock& block : kArt) draw_block(block, scratch, drawn);
-    for (const ArtBlock& block : kLatinArt) draw_block(block, scratch, drawn);
-    for (const Composed& g : kComposed) compose(g, scratch, drawn);
-    return drawn;
-}
-
-constexpr GlyphTable kBuiltinTable = build_builtin();
-constexpr Drawn kDrawn = drawn_glyphs();
+constexpr Built kBuilt = build_builtin();
 
 }  // namespace
 
 const Font& builtin_font() {
-    static constexpr Font font{kCellWidth, kCellHeight, kBuiltinGlyphs, 1, kBuiltinTable.data()};
+    static constexpr Font font{kCellWidth, kCellHeight, kBuiltinGlyphs, 1, kBuilt.table.data()};
     return font;
 }
 
-bool builtin_font_draws(char32_t c) { return c < char32_t(kBuiltinGlyphs) && kDrawn[std::size_t(c)]; }
+bool builtin_font_draws(char32_t c) { return c < char32_t(kBuiltinGlyphs) && kBuilt.drawn[std::size_t(c)]; }
 
 }  // namespace noneuclid::render
