@@ -109,15 +109,10 @@ bool AttractLessonRun::tick() {
     if (o_.frames > 0 && ++frames_ > o_.frames) {
         status_ = player_ ? player_->finish() : run_.loop->finish();
         if (player_ && !o_.screenshot.empty()) {  // (the lesson's steps keep no screenshot: the run's is taken here)
-            Picture shot;
-            std::string error;
-            if (!display_.read_back(shot, error) || !platform::write_png(o_.screenshot, shot.canvas, error)) {
-                std::fprintf(stderr, "noneuclid: the screenshot: %s\n", error.c_str());
-                status_ = status_ ? status_ : 1;
-            } else {
-                std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, the lesson's step %d, K = %.3f)\n", o_.screenshot.c_str(),
-                             shot.canvas.width(), shot.canvas.height(), player_->step() + 1, player_->session().curvature());
-            }
+            char where[64];
+            std::snprintf(where, sizeof where, "the lesson's step %d, K = %.3f", player_->step() + 1,
+                          player_->session().curvature());
+            if (write_screenshot(display_, o_.screenshot, where) != 0) status_ = status_ ? status_ : 1;
         }
         return false;
     }
@@ -144,23 +139,7 @@ namespace {
 int paragraph(const render::Canvas& c, const render::Font& font, int x, int y, int width, const std::string& text,
               render::Rgb color, int scale) {
     const int line = (font.height + 3) * scale;
-    std::string cur;
-    std::size_t at = 0;
-    while (at < text.size()) {
-        std::size_t end = text.find(' ', at);
-        if (end == std::string::npos) end = text.size();
-        const std::string word = text.substr(at, end - at);
-        const std::string trial = cur.empty() ? word : cur + " " + word;
-        if (!cur.empty() && render::text_width(font, trial, scale) > width) {
-            render::draw_text(c, font, x, y, cur, color, scale);
-            y += line, cur = word;
-        } else {
-            cur = trial;
-        }
-        at = end + 1;
-    }
-    if (!cur.empty()) render::draw_text(c, font, x, y, cur, color, scale), y += line;
-    return y;
+    return y + line * render::draw_wrapped(c, font, text.c_str(), " ", color, scale, x, width, line, y, true);
 }
 
 }  // namespace
@@ -177,11 +156,12 @@ bool write_worksheet(const files::Lesson& lesson, const Options& base, const std
     const lang::Language language = resolve_language(base);
     render::draw_text(page, font, kMargin, kMargin, lesson.title, ink, 4);
     paragraph(page, font, kMargin, kMargin + 50, kWidth - 2 * kMargin, lesson.about, grey, 2);
-    // A line for the pupil's name, under the lesson's words.
+    // A line for the pupil's name, top right, beside the title (whose 28 characters end before it).
     const char* name = lang::text(Text::worksheet_name, language);
-    const int name_x = kMargin + render::text_width(font, name, 2) + 12;
-    render::draw_text(page, font, kMargin, kTop - 50, name, ink, 2);
-    for (int x = name_x; x < name_x + 420; ++x) page.set(x, kTop - 36, render::Rgb{170, 170, 170});
+    constexpr int kNameX = 780;
+    const int line_x = kNameX + render::text_width(font, name, 2) + 12;
+    render::draw_text(page, font, kNameX, kMargin + 14, name, ink, 2);
+    for (int x = line_x; x < kWidth - kMargin; ++x) page.set(x, kMargin + 30, render::Rgb{170, 170, 170});
     for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i) {
         const files::LessonStep& s = lesson.steps[i];
         Options o = step_options(lesson, base, i);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdio>
+#include <cstring>
 #include <string_view>
 #include <utility>
 
@@ -259,6 +261,39 @@ bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& er
 int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_view text,
               Rgb color, int scale) {
     return layout(&canvas, font, x, y, text, color, scale);
+}
+
+int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale, int x,
+                 int width, int line, int y, bool top) {
+    const std::size_t sep_len = std::strlen(sep);
+    int lines = 0;
+    for (int pass = 0; pass < 2; ++pass) {  // pass 0 counts the lines, pass 1 draws them
+        int at = top ? y : y - (lines - 1) * line, n = 0;
+        char buf[512];
+        std::size_t len = 0;
+        const char* p = text;
+        while (*p) {
+            const char* end = std::strstr(p, sep);
+            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
+            char trial[512];
+            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
+                          static_cast<int>(item), p);
+            if (len && text_width(font, trial, scale) > width) {  // this item starts the next line
+                if (pass == 1) draw_text(c, font, x, at, buf, color, scale);
+                at += line, ++n;
+                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
+            } else {
+                std::snprintf(buf, sizeof buf, "%s", trial);
+            }
+            len = std::strlen(buf);
+            p += item;
+            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
+            while (*p == ' ') ++p;
+        }
+        if (len && pass == 1) draw_text(c, font, x, at, buf, color, scale);
+        lines = len ? n + 1 : n;
+    }
+    return lines;
 }
 
 int text_width(const Font& font, std::string_view text, int scale) {

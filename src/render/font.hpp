@@ -60,6 +60,14 @@ bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& er
 int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_view text,
               Rgb color, int scale = 1);
 
+// `text` wrapped to `width` pixels at its separators (`sep`: "  " between a legend's items, " "
+// between words), from x, lines `line` pixels apart: the first line's top at y (top), or the
+// last line's (not top: text that ends at y, as the HUD's legend does). A line longer than
+// `width` with no separator is drawn whole (and clipped). Returns the number of lines.
+// Allocates nothing: a line at a time in a fixed buffer (511 bytes; longer lines are cut).
+int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale, int x,
+                 int width, int line, int y, bool top);
+
 // The width draw_text returns for the same text, without drawing.
 int text_width(const Font& font, std::string_view text, int scale = 1);
 

@@ -64,44 +64,6 @@ void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, i
     }
 }
 
-// `text` wrapped to the width at its separators (`sep`: the legend's items are two spaces
-// apart, a caption's words one), its last line's top at `bottom`; returns its lines. (A narrow
-// canvas or a large HUD otherwise cut the legend off.) No allocation: one line at a time in a
-// fixed buffer; pass 0 counts the lines, pass 1 draws them.
-int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale,
-                 int margin, int line, int bottom) {
-    const int room = c.width() - 2 * margin;
-    const std::size_t sep_len = std::strlen(sep);
-    int lines = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int y = bottom - (lines - 1) * line, n = 0;
-        char buf[512];
-        std::size_t len = 0;
-        const char* p = text;
-        while (*p) {
-            const char* end = std::strstr(p, sep);
-            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
-            char trial[512];
-            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
-                          static_cast<int>(item), p);
-            if (len && text_width(font, trial, scale) > room) {  // this item starts the next line
-                if (pass == 1) draw_text(c, font, margin, y, buf, color, scale);
-                y += line, ++n;
-                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
-            } else {
-                std::snprintf(buf, sizeof buf, "%s", trial);
-            }
-            len = std::strlen(buf);
-            p += item;
-            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
-            while (*p == ' ') ++p;
-        }
-        if (len && pass == 1) draw_text(c, font, margin, y, buf, color, scale);
-        lines = len ? n + 1 : n;
-    }
-    return lines;
-}
-
 }  // namespace
 
 const char* curvature_word(double K, lang::Language language) {
@@ -136,8 +98,11 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
     }
     if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
     const int bottom = c.height() - margin - font.height * scale;
-    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, line, bottom);
-    if (h.caption[0]) draw_wrapped(c, font, h.caption, " ", color, scale, margin, line, bottom - legend * line - line / 2);
+    // (A narrow canvas or a large HUD would otherwise cut the legend off.)
+    const int room = c.width() - 2 * margin;
+    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, room, line, bottom, false);
+    if (h.caption[0])
+        draw_wrapped(c, font, h.caption, " ", color, scale, margin, room, line, bottom - legend * line - line / 2, false);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 
