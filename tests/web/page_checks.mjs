@@ -276,6 +276,45 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     await page.close();
   });
 
+  // A teacher's link to a lesson file beside the page, played to its end on a phone held either
+  // way and on a desktop: a timed step, a step that ends when K passes 0.5 (the + key held), and
+  // the game's step that ends on fire (the touch button).
+  fs.writeFileSync(path.join(work, 'site', 'short.toml'), [
+    'title = "A short lesson"', '', '[[step]]', 'caption = "Look."', 'scene = "kiosk"', 'curvature = 0', 'seconds = 0.5', '',
+    '[[step]]', 'caption = "Hold K+."', 'curvature = 0', 'done = "curvature above 0.5"', 'seconds = 60', '',
+    '[[step]]', 'caption = "Fire."', 'scene = "asteroids"', 'done = "fire"', ''].join('\n'));
+  for (const v of VIEWPORTS) {
+    await check(`${v.width}x${v.height}: a teacher's lesson file plays to its end (a timed step, K+ held, the fire button)`, async () => {
+      const {page, started} = await open('lesson=short.toml', v);
+      expect(started === true, 'the lesson did not start');
+      const until = async (what, test) => {
+        for (let t = 0; t < 300; ++t) {
+          const s = await state(page);
+          if (test(s)) return s;
+          await sleep(50);
+        }
+        throw new Error(`${what} did not come within 15 s: ${JSON.stringify(await state(page))}`);
+      };
+      await until('step 2', (s) => s.lessonStep === 2);
+      await page.key('keyDown', '+', 'Equal', 187);
+      await until('step 3', (s) => s.lessonStep === 3);
+      await page.key('keyUp', '+', 'Equal', 187);
+      const at = await page.evaluate(`(() => {
+        const b = document.querySelector('#touch button[data-control=fire]');
+        if (!b || !b.getClientRects().length) return null;
+        const r = b.getBoundingClientRect();
+        return {x: r.x + r.width / 2, y: r.y + r.height / 2, inside: r.bottom <= innerHeight && r.right <= innerWidth};
+      })()`);
+      expect(at && at.inside, `the fire button is not on screen in the game's step: ${JSON.stringify(at)}`);
+      await page.touch('touchStart', at.x, at.y);
+      await sleep(100);
+      await page.touch('touchEnd', at.x, at.y);
+      await until('the end of the lesson', (s) => !s.running);
+      expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+      await page.close();
+    });
+  }
+
   await check('?lesson=curvature plays the lesson\'s first step with its caption; an unknown lesson is one sentence', async () => {
     const {page, started} = await open('lesson=curvature&size=400x240');
     expect(started === true, 'the lesson did not start');

@@ -120,11 +120,7 @@
     canvas.width = mod._nw_width();
     canvas.height = mod._nw_height();
     fit();
-    // The fire button and the help's "Space fires" only where fire does something: the game.
-    const game = mod._nw_has_game() === 1;
-    const fire = document.querySelector('#touch button[data-control=fire]');
-    if (fire) fire.hidden = !game;
-    $('help').textContent = t(game ? 'page_help_game' : 'page_help');
+    showGame();
     image = null;
     tickMs.length = 0;
     $('engine').value = mod.UTF8ToString(mod._nw_engine());
@@ -136,11 +132,24 @@
     return true;
   }
 
+  // The fire button and the help's "Space fires" only where fire does something: the game (a
+  // lesson's step may change the scene, so each frame asks).
+  let game = null;
+  function showGame() {
+    const now = mod._nw_has_game() === 1;
+    if (now === game) return;
+    game = now;
+    const fire = document.querySelector('#touch button[data-control=fire]');
+    if (fire) fire.hidden = !game;
+    $('help').textContent = t(game ? 'page_help_game' : 'page_help');
+  }
+
   function frame(mine) {
     if (mine !== generation || !running) return;
     steerCurvature();
     const t0 = performance.now();
     const more = mod._nw_tick();
+    showGame();
     tickMs.push(performance.now() - t0);
     if (tickMs.length > 60) tickMs.shift();
     showState();
