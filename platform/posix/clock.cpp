@@ -1,4 +1,6 @@
-// The clock, the process's CPU time and whether stderr is a terminal (app/platform.hpp), from POSIX.
+// The clock, the process's CPU time, whether stderr is a terminal and the locale's name
+// (app/platform.hpp), from POSIX.
+#include <cstdlib>
 #include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
@@ -21,5 +23,13 @@ CpuTime cpu_time() {
 }
 
 bool stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
+
+std::string locale_name() {
+    for (const char* name : {"LC_ALL", "LC_MESSAGES", "LANG"}) {
+        const char* v = std::getenv(name);
+        if (v && *v) return v;
+    }
+    return {};
+}
 
 }  // namespace noneuclid::platform

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "app/lesson.hpp"
+#include "app/setup.hpp"
+#include "lang/lang.hpp"
 #include "app/run.hpp"
 #include "web_display.hpp"
 
@@ -101,7 +103,7 @@ void start(const std::vector<std::string>& words, Run& run) {
     o = app::layered_options(static_cast<int>(argv.size()), argv.data(), 1, app::Command::run, run.script);
     refuse_options(o);
     if (!o.lesson.empty()) {  // a lesson: its steps on the page's display, not recorded
-        run.lesson_data = app::load_lesson(o.lesson);
+        run.lesson_data = app::load_lesson(o.lesson, app::resolve_language(o));
         run.display = std::make_unique<WebDisplay>(o.width, o.height, o.format);
         run.lesson = std::make_unique<app::LessonPlayer>(run.lesson_data, o, *run.display, "web");
         return;
@@ -280,5 +282,19 @@ EMSCRIPTEN_KEEPALIVE const char* nw_recording() {
 
 // The last error, one sentence ("" when the last call went well).
 EMSCRIPTEN_KEEPALIVE const char* nw_message() { return g_message.c_str(); }
+
+// The catalogue (lang/texts.hpp) in the language `code` names (the address's ?lang=, or the
+// browser's "de-DE"; English for one without a catalogue): "lang\tde" first, then a
+// "name\ttext" line for every text. The page labels itself from it and passes the code as --lang.
+EMSCRIPTEN_KEEPALIVE const char* nw_texts(const char* code) {
+    using namespace noneuclid::lang;
+    static std::string out;
+    Language language = Language::en;
+    parse_language(code ? code : "", language);
+    out = std::string("lang\t") + language_code(language) + "\n";
+    for (int i = 0; i < kTexts; ++i)
+        out += std::string(text_name(static_cast<Text>(i))) + "\t" + text(static_cast<Text>(i), language) + "\n";
+    return out.c_str();
+}
 
 }  // extern "C"

@@ -17,6 +17,8 @@ int64_t monotonic_ns() { return static_cast<int64_t>(emscripten_get_now() * 1e6)
 // A page cannot ask for its CPU time: --stats reports the wall time alone there.
 CpuTime cpu_time() { return {}; }
 bool stderr_is_terminal() { return false; }
+// The page passes the browser's language (or the address's ?lang=) as --lang.
+std::string locale_name() { return {}; }
 
 void prepare_process() {}
 

@@ -14,9 +14,9 @@
 
 namespace noneuclid::app {
 
-files::Lesson load_lesson(const std::string& name) {
+files::Lesson load_lesson(const std::string& name, lang::Language language) {
     files::Lesson lesson;
-    if (files::builtin_lesson(name, lesson)) return lesson;
+    if (files::builtin_lesson(name, lesson, language)) return lesson;
     const bool file = name.find('/') != std::string::npos || name.ends_with(".toml");
     if (!file)
         usage_error("there is no built-in lesson '" + world::printable(name) + "': the lessons are " +
@@ -28,16 +28,21 @@ files::Lesson load_lesson(const std::string& name) {
 
 int lesson_command(int argc, char** argv, int first) {
     if (first >= argc || argv[first][0] == '-') {
-        if (first < argc) usage_error("lesson takes a lesson's name first (or nothing, for the list), not '" +
-                                      world::printable(argv[first]) + "'.");
+        // The list, in the language --lang (alone) or the locale names.
+        Options o = defaults(Command::run);
+        if (first < argc && std::strcmp(argv[first], "--lang") != 0)
+            usage_error("lesson takes a lesson's name first (or nothing, or --lang L, for the list), not '" +
+                        world::printable(argv[first]) + "'.");
+        Args args(argc, argv, first);
+        parse_options(args, o, Command::run);
+        const lang::Language language = resolve_language(o);
         for (const std::string& name : files::builtin_lesson_names()) {
             files::Lesson l;
-            files::builtin_lesson(name, l);
+            files::builtin_lesson(name, l, language);
             std::printf("%-10s  %s: %s (%zu steps)\n", name.c_str(), l.title.c_str(), l.about.c_str(), l.steps.size());
         }
         return 0;
     }
-    const files::Lesson lesson = load_lesson(argv[first]);
     // --worksheet FILE and --print are the lesson's own; the rest are run's.
     std::string worksheet;
     bool print = false;
@@ -53,7 +58,11 @@ int lesson_command(int argc, char** argv, int first) {
         }
     }
     if (print) {
-        const char* text = files::builtin_lesson_text(argv[first]);
+        Options o = defaults(Command::run);
+        Args args(static_cast<int>(rest.size()), rest.data(), 1);
+        parse_options(args, o, Command::run);
+        const char* text = files::builtin_lesson_text(argv[first], resolve_language(o));
+        if (!text && !files::builtin_lesson_text(argv[first])) load_lesson(argv[first], lang::Language::en);  // says why
         if (!text) usage_error("--print writes a built-in lesson's file: '" + world::printable(argv[first]) + "' is a file already.");
         std::fputs(text, stdout);
         return 0;
@@ -63,6 +72,7 @@ int lesson_command(int argc, char** argv, int first) {
         Args args(static_cast<int>(rest.size()), rest.data(), 1);
         parse_options(args, base, Command::run);
     }
+    const files::Lesson lesson = load_lesson(argv[first], resolve_language(base));
     if (!base.record.empty()) usage_error("--record keeps one scene's run: a lesson's steps are not recorded (record a step with run --scene).");
     if (!worksheet.empty()) {
         std::string error;

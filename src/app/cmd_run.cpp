@@ -118,7 +118,7 @@ int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first) {
 int run_command(int argc, char** argv, int first) {
     RunSetup r;
     set_up_run(argc, argv, first, r);
-    if (!r.o.lesson.empty()) return play_lesson_on(load_lesson(r.o.lesson), r);
+    if (!r.o.lesson.empty()) return play_lesson_on(load_lesson(r.o.lesson, resolve_language(r.o)), r);
     const DisplayRow& shown = *r.shown;
     files::Board& board = r.board;
     Script& script = r.script;
@@ -130,7 +130,7 @@ int run_command(int argc, char** argv, int first) {
     if (!o.attract_lesson.empty()) {
         if (!o.record.empty() || !o.actions.empty())
             usage_error("--attract-lesson starts a new run for each visitor: it cannot be recorded or replayed (drop --record or --actions).");
-        attract_lesson = std::make_unique<files::Lesson>(load_lesson(o.attract_lesson));
+        attract_lesson = std::make_unique<files::Lesson>(load_lesson(o.attract_lesson, resolve_language(o)));
     }
 
     std::string error;

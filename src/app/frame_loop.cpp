@@ -45,21 +45,27 @@ bool FrameLoop::tick() {
     return true;
 }
 
+int write_screenshot(Display& display, const std::string& path, const std::string& where) {
+    Picture shot;
+    std::string error;
+    if (!display.read_back(shot, error) || !platform::write_png(path, shot.canvas, error)) {
+        std::fprintf(stderr, "noneuclid: the screenshot: %s\n", error.c_str());
+        return 1;
+    }
+    std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, %s)\n", path.c_str(), shot.canvas.width(), shot.canvas.height(),
+                 where.c_str());
+    return 0;
+}
+
 int FrameLoop::finish() {
     int status = failed_ ? 1 : 0;
     if (const int sig = platform::stop_signal())
         std::fprintf(stderr, "noneuclid: stopped by signal %d after %ld frames.\n", sig, frames_);
     if (recorder_) recorder_->setting("frames", std::to_string(frames_));
     if (!o_.screenshot.empty()) {
-        Picture shot;
-        std::string error;
-        if (!display_.read_back(shot, error) || !platform::write_png(o_.screenshot, shot.canvas, error)) {
-            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
-            status = status ? status : 1;
-        } else {
-            std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, frame %ld, K = %.3f)\n", o_.screenshot.c_str(),
-                         shot.canvas.width(), shot.canvas.height(), session_.frame(), session_.curvature());
-        }
+        char where[64];
+        std::snprintf(where, sizeof where, "frame %ld, K = %.3f", session_.frame(), session_.curvature());
+        if (write_screenshot(display_, o_.screenshot, where) != 0) status = status ? status : 1;
     }
     if (o_.stats) {
         const double wall = static_cast<double>(platform::monotonic_ns() - start_) * 1e-9;

@@ -24,6 +24,10 @@ struct LoopOptions {
     std::string screenshot;  // at the end: what the display shows, as PNG ("" none)
 };
 
+// --screenshot: what `display` shows, read back and written to `path` as PNG; says "wrote PATH
+// (WxH, WHERE)" or why not on stderr. 0, or 1 if it was not written.
+int write_screenshot(Display& display, const std::string& path, const std::string& where);
+
 class FrameLoop final : InputSink {
 public:
     // `script` (events to play at their time) and `recorder` may be null; all must outlive it.

@@ -9,6 +9,7 @@
 #include "app/platform.hpp"
 #include "app/setup.hpp"
 #include "render/font.hpp"
+#include "render/hud.hpp"
 #include "world/quote.hpp"
 
 namespace noneuclid::app {
@@ -52,7 +53,8 @@ void LessonPlayer::start(int i) {
     if (!display_.realtime() && base_.frames > 0) o.frames = std::min(o.frames > 0 ? o.frames : base_.frames, base_.frames);
     // The caption, and where the lesson is: "2/4".
     caption_ = std::to_string(i + 1) + "/" + std::to_string(lesson_.steps.size()) + "  " + s.caption;
-    if (s.done.kind != files::LessonDone::fire || s.seconds == 0) caption_ += "  (" + files::lesson_done_words(s.done) + ")";
+    if (s.done.kind != files::LessonDone::fire || s.seconds == 0)
+        caption_ += "  (" + files::lesson_done_words(s.done, resolve_language(base_)) + ")";
     if (i + 1 < static_cast<int>(lesson_.steps.size())) o.screenshot.clear();  // the last step's picture only
     o.caption = caption_;
     prepare_run(run_, o);
@@ -108,15 +110,10 @@ bool AttractLessonRun::tick() {
     if (o_.frames > 0 && ++frames_ > o_.frames) {
         status_ = player_ ? player_->finish() : run_.loop->finish();
         if (player_ && !o_.screenshot.empty()) {  // (the lesson's steps keep no screenshot: the run's is taken here)
-            Picture shot;
-            std::string error;
-            if (!display_.read_back(shot, error) || !platform::write_png(o_.screenshot, shot.canvas, error)) {
-                std::fprintf(stderr, "noneuclid: the screenshot: %s\n", error.c_str());
-                status_ = status_ ? status_ : 1;
-            } else {
-                std::fprintf(stderr, "noneuclid: wrote %s (%dx%d, the lesson's step %d, K = %.3f)\n", o_.screenshot.c_str(),
-                             shot.canvas.width(), shot.canvas.height(), player_->step() + 1, player_->session().curvature());
-            }
+            char where[64];
+            std::snprintf(where, sizeof where, "the lesson's step %d, K = %.3f", player_->step() + 1,
+                          player_->session().curvature());
+            if (write_screenshot(display_, o_.screenshot, where) != 0) status_ = status_ ? status_ : 1;
         }
         return false;
     }
@@ -143,23 +140,7 @@ namespace {
 int paragraph(const render::Canvas& c, const render::Font& font, int x, int y, int width, const std::string& text,
               render::Rgb color, int scale) {
     const int line = (font.height + 3) * scale;
-    std::string cur;
-    std::size_t at = 0;
-    while (at < text.size()) {
-        std::size_t end = text.find(' ', at);
-        if (end == std::string::npos) end = text.size();
-        const std::string word = text.substr(at, end - at);
-        const std::string trial = cur.empty() ? word : cur + " " + word;
-        if (!cur.empty() && render::text_width(font, trial, scale) > width) {
-            render::draw_text(c, font, x, y, cur, color, scale);
-            y += line, cur = word;
-        } else {
-            cur = trial;
-        }
-        at = end + 1;
-    }
-    if (!cur.empty()) render::draw_text(c, font, x, y, cur, color, scale), y += line;
-    return y;
+    return y + line * render::draw_wrapped(c, font, text.c_str(), " ", color, scale, x, width, line, y, true);
 }
 
 }  // namespace
@@ -172,8 +153,16 @@ bool write_worksheet(const files::Lesson& lesson, const Options& base, const std
     std::vector<uint8_t> pixels(static_cast<std::size_t>(kWidth) * height * 4, 0xFF);  // white paper
     const render::Canvas page(pixels.data(), kWidth, height, std::ptrdiff_t{kWidth} * 4, fmt);
     const render::Rgb ink{20, 20, 20}, grey{90, 90, 90};
+    using lang::Text;
+    const lang::Language language = resolve_language(base);
     render::draw_text(page, font, kMargin, kMargin, lesson.title, ink, 4);
     paragraph(page, font, kMargin, kMargin + 50, kWidth - 2 * kMargin, lesson.about, grey, 2);
+    // A line for the pupil's name, top right, beside the title (whose 28 characters end before it).
+    const char* name = lang::text(Text::worksheet_name, language);
+    constexpr int kNameX = 780;
+    const int line_x = kNameX + render::text_width(font, name, 2) + 12;
+    render::draw_text(page, font, kNameX, kMargin + 14, name, ink, 2);
+    for (int x = line_x; x < kWidth - kMargin; ++x) page.set(x, kMargin + 30, render::Rgb{170, 170, 170});
     for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i) {
         const files::LessonStep& s = lesson.steps[i];
         Options o = step_options(lesson, base, i);
@@ -186,10 +175,15 @@ bool write_worksheet(const files::Lesson& lesson, const Options& base, const std
             for (int x = 0; x < kPanelW; ++x) page.set(kMargin + x, y0 + y, picture.canvas.get(x, y));
         const int tx = kMargin + kPanelW + 30, tw = kWidth - tx - kMargin;
         char head[96];
-        std::snprintf(head, sizeof head, "%d. K = %+.2f, %s", i + 1, r.K, geo::projection_name(o.projection));
+        std::snprintf(head, sizeof head, lang::text(Text::worksheet_step, language), i + 1, r.K,
+                      render::projection_words(o.projection, language));
         int y = paragraph(page, font, tx, y0, tw, head, grey, 2) + 6;
         y = paragraph(page, font, tx, y, tw, s.caption, ink, 2) + 10;
-        if (!s.question.empty()) y = paragraph(page, font, tx, y, tw, "Question: " + s.question, ink, 2) + 10;
+        if (!s.question.empty()) {
+            char question[600];
+            std::snprintf(question, sizeof question, lang::text(Text::question, language), s.question.c_str());
+            y = paragraph(page, font, tx, y, tw, question, ink, 2) + 10;
+        }
         if (!s.question.empty())  // room to write the answer
             for (int k = 0; k < 3 && y + 30 < y0 + kPanelH; ++k, y += 30)
                 for (int x = tx; x < tx + tw; ++x) page.set(x, y + 24, render::Rgb{170, 170, 170});

@@ -89,6 +89,6 @@ bool write_worksheet(const files::Lesson& lesson, const Options& o, const std::s
 // chosen as run chooses it (app/cmd_run.cpp). Returns the exit status.
 int play_lesson(const files::Lesson& lesson, int argc, char** argv, int first);
 // The lesson `name` names: a built-in's, else a file's (a UsageError, one sentence, if neither).
-files::Lesson load_lesson(const std::string& name);
+files::Lesson load_lesson(const std::string& name, lang::Language language);
 
 }  // namespace noneuclid::app

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/displays.hpp"
+#include "lang/lang.hpp"
 #include "world/earth.hpp"
 #include "world/quote.hpp"
 
@@ -190,6 +191,15 @@ const OptionRow kOptions[] = {
     {"--attract-lesson", "NAME|FILE", kRun,
      "attract mode plays this lesson (docs/lessons.md) until a button is pressed, instead of flying the ship", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.attract_lesson = a.value(opt); }},
+    {"--lang", "L", kPicture, "the language of the HUD, the lessons and the page: en, de or fr (default: the "
+     "locale's, $LC_ALL, $LC_MESSAGES or $LANG, else en; docs/languages.md)", nullptr,
+     [](Args& a, const std::string& opt, Options& o, Command) {
+         const std::string v = a.value(opt);
+         lang::Language l{};
+         if (!lang::parse_language(v, l))
+             throw UsageError{opt + " takes " + lang::language_choices() + ", not '" + world::printable(v) + "'."};
+         o.language = lang::language_code(l);
+     }},
     {"--one-button", "", kRun, "fire alone plays: the ship turns by itself, hold fire to thrust, tap to fire (or, "
      "without the game, for the next K); docs/accessibility.md", nullptr,
      [](Args&, const std::string&, Options& o, Command) { o.one_button = true; }},
@@ -370,6 +380,7 @@ void apply_board(const files::Board& b, Options& o) {
     o.large_hud = b.large_hud;
     o.one_button = b.one_button;
     o.sound = b.sound;
+    if (!b.language.empty()) o.language = b.language;  // (checked when read)
     if (!render::parse_palette(b.palette, o.palette)) o.palette = render::Palette::scene;  // (checked when read)
     o.threads = b.threads;
     o.fps = b.fps;

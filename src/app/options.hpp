@@ -61,6 +61,7 @@ struct Options {
     bool one_button = false;    // run: fire alone plays (app/one_button.hpp)
     bool sound = false;         // run: the game's sound (docs/sound.md)
     std::string sound_device = "default";  // run: the ALSA device it plays on
+    std::string language;       // the HUD's and lessons' language: en, de, fr; "" the locale's (resolve_language)
     std::string font;           // "" the default, "builtin", or a PSF file
     std::string legend;         // keys or buttons; "" the display's (render: buttons)
     long best = 0;              // the game's high score shown before any game ends (run: the table's)

@@ -40,6 +40,10 @@ void prepare_process();
 void catch_stop_signals();
 int stop_signal();
 
+// The user's locale for messages: the first of $LC_ALL, $LC_MESSAGES and $LANG that is set and
+// not empty ("de_DE.UTF-8"), or "" (the web page passes the browser's language as --lang).
+std::string locale_name();
+
 // ---- which display `run` uses when not told ------------------------------------------------
 
 enum class DisplayKind { x11, fbdev, png };

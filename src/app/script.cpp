@@ -16,7 +16,7 @@ constexpr std::size_t kSettingLimit = 4096;
 
 const char* const kSettingKeys[] = {"scene", "curvature", "engine", "projection", "size",   "format", "aa",
                                     "hud",   "font",      "legend", "frames",     "best",   "centre", "view",
-                                    "tissot", "palette", "large-hud", "hud-scale", nullptr};
+                                    "tissot", "palette", "large-hud", "hud-scale", "lang", nullptr};
 
 bool is_setting(const std::string& word) {
     for (const char* const* k = kSettingKeys; *k; ++k)

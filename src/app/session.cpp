@@ -126,21 +126,26 @@ public:
         // The instruments' readings, with the HUD or without: they are the instruments' faces.
         int side = 0;
         for (const auto& g : world_.gauges())
-            if (g.on() && side < 2) render::draw_measure_panel(c, font_, render::measure_panel(g.reading()), side++);
+            if (g.on() && side < 2)
+                render::draw_measure_panel(c, font_, render::measure_panel(g.reading(), options_.language), side++);
         if (!options_.hud) return;
         render::HudInfo info;
         info.K = static_cast<double>(world_.K);
         info.fps = options_.show_fps ? fps_ : 0;
         info.scene = options_.scene_name.c_str();
-        info.projection = geo::projection_name(options_.draw.projection);
+        info.projection = render::projection_words(options_.draw.projection, options_.language);
         const bool attract = autopilot_.active() || replayed_attract_;
-        info.controls = attract ? (world_.game().on() ? kAttractGameLegend : kAttractLegend) : options_.legend.c_str();
+        using lang::Text;
+        info.controls = attract ? lang::text(world_.game().on() ? Text::legend_attract_game : Text::legend_attract,
+                                             options_.language)
+                                : options_.legend.c_str();
         info.game = hud_game();
-        char note[80];
+        char note[120];
         if (zoom_note(note, sizeof note)) info.note = note;
         info.large = options_.large_hud;
         info.scale = options_.hud_scale;
         info.caption = options_.caption.c_str();
+        info.language = options_.language;
         const render::PaletteFrame colours = render::palette_frame(options_.draw.palette);
         render::draw_hud(c, font_, info, colours.text, colours.dim);
     }
@@ -174,9 +179,9 @@ private:
         const auto z = world_.zoom();
         if (!z.on) return false;
         const double km = 3.14159265358979323846 * world::kEarthRadiusKm * std::sqrt(z.z);
-        std::snprintf(out, size, z.least  ? "view %.0f km: as close as the zoom goes"
-                                 : z.most ? "view %.0f km: the whole globe"
-                                          : "view %.0f km", km);
+        using lang::Text;
+        std::snprintf(out, size, lang::text(z.least ? Text::view_km_least : z.most ? Text::view_km_most : Text::view_km,
+                                            options_.language), km);
         return true;
     }
     void flush() {

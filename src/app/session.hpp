@@ -18,6 +18,7 @@
 #include "app/sound.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
+#include "lang/lang.hpp"
 #include "render/font.hpp"
 #include "files/dump.hpp"
 #include "world/scene.hpp"
@@ -35,7 +36,8 @@ struct SessionOptions {
     bool one_button = false;      // fire alone plays (app/one_button.hpp)
     bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
     std::string scene_name;
-    std::string legend;           // the HUD's controls line
+    std::string legend;           // the HUD's controls line (in `language`)
+    lang::Language language = lang::Language::en;  // of the HUD's words
     AttractOptions attract{0, 40, 0.25};  // idle_seconds 0: off
     int threads = 1;              // drawing threads (a pool started once); the same pixels
     double dt = 1.0 / 60;         // world seconds per step
@@ -113,19 +115,5 @@ public:
 // `recorder` and `scores` (both may be null) must outlive it.
 std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores = nullptr);
-
-// The HUD legends: the desktop's keys, the kiosk's buttons.
-inline constexpr const char* kKeysLegend =
-    "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
-inline constexpr const char* kButtonsLegend = "thrust  left/right  fire  curvature +/-  preset  reset";
-// In a scene that zooms (the earth), where the curvature keys zoom.
-inline constexpr const char* kZoomKeysLegend =
-    "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
-inline constexpr const char* kZoomButtonsLegend = "thrust  left/right  zoom +/-  preset  reset";
-// One-button mode (app/one_button.hpp): fire alone.
-inline constexpr const char* kOneButtonGameLegend = "one button: hold fire to thrust, tap to fire";
-inline constexpr const char* kOneButtonLegend = "one button: hold fire to thrust, tap for the next K";
-inline constexpr const char* kAttractLegend = "attract mode: press any button to fly";
-inline constexpr const char* kAttractGameLegend = "attract mode: press fire to play";
 
 }  // namespace noneuclid::app

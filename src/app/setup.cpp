@@ -70,6 +70,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
     if (o.palette != render::Palette::scene) rec.setting("palette", render::palette_name(o.palette));
     if (o.large_hud) rec.setting("large-hud", "on");
     if (o.hud_scale > 0) rec.setting("hud-scale", std::to_string(o.hud_scale));
+    rec.setting("lang", lang::language_code(resolve_language(o)));
     rec.setting("legend", o.legend.empty() ? "buttons" : o.legend);
     rec.setting("font", font_setting(font));
     for (const render::PixelFormat& f : render::kNamedFormats)
@@ -111,6 +112,13 @@ void check_outputs(const Options& o) {
         if (!path->empty() && !platform::output_allowed(*path, error)) usage_error(std::string(option) + ": " + error);
 }
 
+lang::Language resolve_language(const Options& o) {
+    lang::Language l = lang::Language::en;
+    if (!o.language.empty()) lang::parse_language(o.language, l);
+    else lang::parse_language(platform::locale_name(), l);
+    return l;
+}
+
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {
     SessionOptions so;
     so.draw.projection = o.projection;
@@ -128,9 +136,15 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     // A scene file by its name alone: the HUD shows the same words however the path was spelt
     // (typed relative in a run, absolute in its recording), so a replay draws the same pixels.
     so.scene_name = std::filesystem::path(scene.name).filename().string();
-    if (scene.zoom.on()) so.legend = legend == "keys" ? kZoomKeysLegend : kZoomButtonsLegend;
-    else so.legend = legend == "keys" ? kKeysLegend : kButtonsLegend;
-    if (o.one_button) so.legend = scene.game.on ? kOneButtonGameLegend : kOneButtonLegend;
+    so.language = resolve_language(o);
+    using lang::Text;
+    const bool keys = legend == "keys";
+    // (The kiosk's fire button does something only in the game or with a scene's instruments.)
+    const bool fire = scene.game.on || !scene.measures.empty();
+    Text words = scene.zoom.on() ? (keys ? Text::legend_zoom_keys : Text::legend_zoom_buttons)
+                                 : (keys ? Text::legend_keys : fire ? Text::legend_buttons : Text::legend_buttons_no_fire);
+    if (o.one_button) words = scene.game.on ? Text::legend_one_button_game : Text::legend_one_button;
+    so.legend = lang::text(words, so.language);
     so.attract.idle_seconds = o.attract;
     so.attract.sweep_seconds = o.sweep;
     so.threads = o.threads;

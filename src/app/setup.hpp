@@ -39,6 +39,10 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play
 // (platform::output_allowed: a directory, a device, a symbolic link): --out, --gif, --record
 // and --screenshot.
 void check_outputs(const Options& o);
+// The language o asks for: --lang (or a board's, a recording's), else the locale's
+// (platform::locale_name), else English.
+lang::Language resolve_language(const Options& o);
+
 // The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
 SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
 

@@ -4,6 +4,7 @@
 
 #include "geometry/geometry.hpp"
 #include "render/palette.hpp"
+#include "lang/lang.hpp"
 #include "world/engines.hpp"
 #include "world/quote.hpp"
 #include "files/text_file.hpp"
@@ -49,7 +50,7 @@ void read_board(const toml::table& root, Board& b) {
     if (root.get("models")) b.models = strings(root, "models", "");
     if (const toml::table* t = section(root, "display")) {
         const Reader d(*t, "display: ");
-        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "palette", "large_hud", "one_button", "sound", "threads"});
+        d.only({"device", "fps", "scene", "engine", "projection", "antialias", "hud", "palette", "large_hud", "one_button", "sound", "language", "threads"});
         b.device = d.plain_string("device", b.device);
         b.fps = d.number("fps", b.fps, 1, 1000, "frames per second");
         b.scene = d.plain_string("scene", b.scene);
@@ -70,6 +71,11 @@ void read_board(const toml::table& root, Board& b) {
         render::Palette palette{};
         if (!render::parse_palette(b.palette, palette))
             throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(render::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
+        b.language = d.string("language", b.language);
+        lang::Language language{};
+        if (!b.language.empty() && !lang::parse_language(b.language, language))
+            throw Bad{t->get("language")->source(), "display: expected language = " + std::string(lang::language_choices()) + " (or \"\" for the locale's), found \"" + world::printable(b.language) + "\""};
+        if (!b.language.empty()) b.language = lang::language_code(language);
         b.threads = static_cast<int>(d.integer("threads", b.threads, 1, 16, "drawing threads, 1 for the main thread only"));
     }
     if (const toml::table* t = section(root, "gpio")) {

@@ -15,6 +15,7 @@
 //     large_hud = false       # the HUD's text twice as large
 //     one_button = false      # fire alone plays
 //     sound = false           # the game's sound (docs/sound.md)
+//     language = ""           # en, de, fr; empty: the locale's
 //     threads = 1             # drawing threads (1: the main thread only)
 //     [gpio]
 //     chip = ["pinctrl-bcm2711"]  # labels or /dev/gpiochipN paths, tried in order
@@ -62,6 +63,7 @@ struct Board {
     bool hud = true;
     std::string palette = "scene";  // render/palette.hpp's names
     bool large_hud = false;
+    std::string language;  // en, de, fr ("" the locale's)
     bool one_button = false;  // fire alone plays (docs/accessibility.md)
     bool sound = false;       // the game's sound (docs/sound.md): off unless the board turns it on
     int threads = 1;

@@ -83,13 +83,15 @@ bool parse_lesson_done(const std::string& text, LessonDone& out) {
     return false;
 }
 
-std::string lesson_done_words(const LessonDone& d) {
-    char buf[64];
+std::string lesson_done_words(const LessonDone& d, lang::Language language) {
+    using lang::Text;
+    const auto t = [language](Text name) { return lang::text(name, language); };
+    char buf[96];
     switch (d.kind) {
-        case LessonDone::fire: return "press fire to go on";
-        case LessonDone::curvature_above: std::snprintf(buf, sizeof buf, "K above %g", d.value); return buf;
-        case LessonDone::curvature_below: std::snprintf(buf, sizeof buf, "K below %g", d.value); return buf;
-        case LessonDone::score: std::snprintf(buf, sizeof buf, "a score of %g", d.value); return buf;
+        case LessonDone::fire: return t(Text::done_fire);
+        case LessonDone::curvature_above: std::snprintf(buf, sizeof buf, t(Text::done_above), d.value); return buf;
+        case LessonDone::curvature_below: std::snprintf(buf, sizeof buf, t(Text::done_below), d.value); return buf;
+        case LessonDone::score: std::snprintf(buf, sizeof buf, t(Text::done_score), d.value); return buf;
     }
     return "";
 }

@@ -15,6 +15,8 @@
 //     seconds = 30               # at most this long (0: until done, or fire)
 #pragma once
 
+#include "lang/lang.hpp"
+
 #include <string>
 #include <vector>
 
@@ -46,16 +48,17 @@ struct Lesson {
 
 // "curvature above 0.9" and the like into `out`; false if it is not one (docs/lessons.md).
 bool parse_lesson_done(const std::string& text, LessonDone& out);
-// The condition in words, as the worksheet prints it ("K above 0.9").
-std::string lesson_done_words(const LessonDone& d);
+// The condition in words, as the worksheet prints it ("K above 0.9"), in `language`.
+std::string lesson_done_words(const LessonDone& d, lang::Language language = lang::Language::en);
 
 bool parse_lesson(const std::string& text, const std::string& name, Lesson& out, SceneError& error);
 bool load_lesson_file(const std::string& path, Lesson& out, SceneError& error);
 
 // The built-in lessons (files/lessons.cpp): their names in order, and one by name (false if none).
 std::vector<std::string> builtin_lesson_names();
-bool builtin_lesson(const std::string& name, Lesson& out);
+// In `language` (files/lessons_de.cpp, lessons_fr.cpp; English for one a language lacks).
+bool builtin_lesson(const std::string& name, Lesson& out, lang::Language language = lang::Language::en);
 // A built-in lesson's file text (null if there is none by that name).
-const char* builtin_lesson_text(const std::string& name);
+const char* builtin_lesson_text(const std::string& name, lang::Language language = lang::Language::en);
 
 }  // namespace noneuclid::files

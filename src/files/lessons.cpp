@@ -1,17 +1,16 @@
 // The built-in lessons (docs/lessons.md), in the lesson file format itself, so that a teacher
 // can copy one and change it: `noneuclid lesson NAME --print` writes it out.
 #include <cstring>
+#include <iterator>
 
 #include "files/lesson_file.hpp"
+#include "files/lessons_text.hpp"
 
 namespace noneuclid::files {
 
 namespace {
 
-struct Builtin {
-    const char* name;
-    const char* text;
-};
+using Builtin = BuiltinLesson;
 
 const Builtin kLessons[] = {
     {"curvature", R"(title = "What curvature is"
@@ -126,19 +125,20 @@ std::vector<std::string> builtin_lesson_names() {
     return out;
 }
 
-bool builtin_lesson(const std::string& name, Lesson& out) {
-    for (const Builtin& b : kLessons)
-        if (name == b.name) {
-            SceneError e;
-            return parse_lesson(b.text, b.name, out, e);
-        }
-    return false;
+const char* builtin_lesson_text(const std::string& name, lang::Language language) {
+    const Builtin* table = kLessons;
+    int count = static_cast<int>(std::size(kLessons));
+    if (language == lang::Language::de) table = kLessonsGerman, count = kLessonsGermanCount;
+    if (language == lang::Language::fr) table = kLessonsFrench, count = kLessonsFrenchCount;
+    for (int i = 0; i < count; ++i)
+        if (name == table[i].name) return table[i].text;
+    return language == lang::Language::en ? nullptr : builtin_lesson_text(name, lang::Language::en);
 }
 
-const char* builtin_lesson_text(const std::string& name) {
-    for (const Builtin& b : kLessons)
-        if (name == b.name) return b.text;
-    return nullptr;
+bool builtin_lesson(const std::string& name, Lesson& out, lang::Language language) {
+    const char* text = builtin_lesson_text(name, language);
+    SceneError e;
+    return text && parse_lesson(text, name, out, e);
 }
 
 }  // namespace noneuclid::files

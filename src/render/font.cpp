@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <cstdio>
+#include <cstring>
 #include <string_view>
 #include <utility>
 
@@ -10,147 +12,6 @@ namespace noneuclid::render {
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------
-// The built-in font, drawn here ('#' set, '.' clear), 12 glyphs to a block in code point order,
-// one space between glyphs. Rows 0..6 hold the glyph (capitals and digits 7 rows tall, lowercase
-// x-height rows 2..6, baseline row 6); row 7 only the descenders of g j p q y and the comma.
-// Turned into the bitmap table at compile time; a malformed drawing does not compile.
-// ---------------------------------------------------------------------------------------------
-constexpr int kCellWidth = 6, kCellHeight = 8, kBuiltinGlyphs = 128;
-
-struct ArtBlock {
-    char32_t first;
-    int count;
-    const char* rows[kCellHeight];
-};
-
-// clang-format off
-constexpr ArtBlock kArt[] = {
-    //   ' '   !     "     #     $     %     &     '     (     )     *     +
-    {32, 12, {"..... ..#.. .#.#. .#.#. ..#.. ##... .##.. ..#.. ...#. .#... ..... .....",
-              "..... ..#.. .#.#. .#.#. .#### ##..# #..#. ..#.. ..#.. ..#.. ..#.. ..#..",
-              "..... ..#.. ..... ##### #.#.. ...#. #.#.. ..... .#... ...#. #.#.# ..#..",
-              "..... ..#.. ..... .#.#. .###. ..#.. .#... ..... .#... ...#. .###. #####",
-              "..... ..#.. ..... ##### ..#.# .#... #.#.# ..... .#... ...#. #.#.# ..#..",
-              "..... ..... ..... .#.#. ####. #..## #..#. ..... ..#.. ..#.. ..#.. ..#..",
-              "..... ..#.. ..... .#.#. ..#.. ...## .##.# ..... ...#. .#... ..... .....",
-              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
-    //   ,     -     .     /     0     1     2     3     4     5     6     7
-    {44, 12, {"..... ..... ..... ..... .###. ..#.. .###. ##### ...#. ##### ..##. #####",
-              "..... ..... ..... ....# #...# .##.. #...# ...#. ..##. #.... .#... ....#",
-              "..... ..... ..... ...#. #..## ..#.. ....# ..#.. .#.#. ####. #.... ...#.",
-              "..... ##### ..... ..#.. #.#.# ..#.. ...#. ...#. #..#. ....# ####. ..#..",
-              "..... ..... ..... .#... ##..# ..#.. ..#.. ....# ##### ....# #...# .#...",
-              ".##.. ..... .##.. #.... #...# ..#.. .#... #...# ...#. #...# #...# .#...",
-              "..#.. ..... .##.. ..... .###. .###. ##### .###. ...#. .###. .###. .#...",
-              ".#... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
-    //   8     9     :     ;     <     =     >     ?     @     A     B     C
-    {56, 12, {".###. .###. ..... ..... ...#. ..... .#... .###. .###. .###. ####. .###.",
-              "#...# #...# .##.. .##.. ..#.. ..... ..#.. #...# #...# #...# #...# #...#",
-              "#...# #...# .##.. .##.. .#... ##### ...#. ....# #.### #...# #...# #....",
-              ".###. .#### ..... ..... #.... ..... ....# ...#. #.#.# ##### ####. #....",
-              "#...# ....# .##.. .##.. .#... ##### ...#. ..#.. #.### #...# #...# #....",
-              "#...# ...#. .##.. ..#.. ..#.. ..... ..#.. ..... #.... #...# #...# #...#",
-              ".###. .##.. ..... .#... ...#. ..... .#... ..#.. .#### #...# ####. .###.",
-              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
-    //   D     E     F     G     H     I     J     K     L     M     N     O
-    {68, 12, {"###.. ##### ##### .###. #...# .###. ..### #...# #.... #...# #...# .###.",
-              "#..#. #.... #.... #...# #...# ..#.. ...#. #..#. #.... ##.## #...# #...#",
-              "#...# #.... #.... #.... #...# ..#.. ...#. #.#.. #.... #.#.# ##..# #...#",
-              "#...# ####. ####. #.### ##### ..#.. ...#. ##... #.... #.#.# #.#.# #...#",
-              "#...# #.... #.... #...# #...# ..#.. ...#. #.#.. #.... #...# #..## #...#",
-              "#..#. #.... #.... #...# #...# ..#.. #..#. #..#. #.... #...# #...# #...#",
-              "###.. ##### #.... .#### #...# .###. .##.. #...# ##### #...# #...# .###.",
-              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
-    //   P     Q     R     S     T     U     V     W     X     Y     Z     [
-    {80, 12, {"####. .###. ####. .#### ##### #...# #...# #...# #...# #...# ##### .###.",
-              "#...# #...# #...# #.... ..#.. #...# #...# #...# #...# #...# ....# .#...",
-              "#...# #...# #...# #.... ..#.. #...# #...# #...# .#.#. .#.#. ...#. .#...",
-              "####. #...# ####. .###. ..#.. #...# #...# #.#.# ..#.. ..#.. ..#.. .#...",
-              "#.... #.#.# #.#.. ....# ..#.. #...# #...# #.#.# .#.#. ..#.. .#... .#...",
-              "#.... #..#. #..#. ....# ..#.. #...# .#.#. #.#.# #...# ..#.. #.... .#...",
-              "#.... .##.# #...# ####. ..#.. .###. ..#.. .#.#. #...# ..#.. ##### .###.",
-              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ....."}},
-    //   \     ]     ^     _     `     a     b     c     d     e     f     g
-    {92, 12, {"..... .###. ..#.. ..... .#... ..... #.... ..... ....# ..... ..##. .....",
-              "#.... ...#. .#.#. ..... ..#.. ..... #.... ..... ....# ..... .#..# .....",
-              ".#... ...#. #...# ..... ..... .###. #.##. .###. .##.# .###. .#... .####",
-              "..#.. ...#. ..... ..... ..... ....# ##..# #.... #..## #...# ###.. #...#",
-              "...#. ...#. ..... ..... ..... .#### #...# #.... #...# ##### .#... #...#",
-              "....# ...#. ..... ..... ..... #...# #...# #...# #...# #.... .#... .####",
-              "..... .###. ..... ##### ..... .#### ####. .###. .#### .###. .#... ....#",
-              "..... ..... ..... ..... ..... ..... ..... ..... ..... ..... ..... .###."}},
-    //   h     i     j     k     l     m     n     o     p     q     r     s
-    {104, 12, {"#.... ..#.. ...#. #.... .##.. ..... ..... ..... ..... ..... ..... .....",
-               "#.... ..... ..... #.... ..#.. ..... ..... ..... ..... ..... ..... .....",
-               "#.##. .##.. ..##. #..#. ..#.. ##.#. #.##. .###. ####. .#### #.##. .####",
-               "##..# ..#.. ...#. #.#.. ..#.. #.#.# ##..# #...# #...# #...# ##..# #....",
-               "#...# ..#.. ...#. ##... ..#.. #.#.# #...# #...# #...# #...# #.... .###.",
-               "#...# ..#.. ...#. #.#.. ..#.. #.#.# #...# #...# ####. .#### #.... ....#",
-               "#...# .###. #..#. #..#. .###. #.#.# #...# .###. #.... ....# #.... ####.",
-               "..... ..... .##.. ..... ..... ..... ..... ..... #.... ....# ..... ....."}},
-    //    t     u     v     w     x     y     z     {     |     }     ~
-    {116, 11, {".#... ..... ..... ..... ..... ..... ..... ...#. ..#.. .#... .....",
-               ".#... ..... ..... ..... ..... ..... ..... ..#.. ..#.. ..#.. .....",
-               "####. #...# #...# #...# #...# #...# ##### ..#.. ..#.. ..#.. .#...",
-               ".#... #...# #...# #...# .#.#. #...# ...#. .#... ..#.. ...#. #.#.#",
-               ".#... #...# #...# #.#.# ..#.. #...# ..#.. ..#.. ..#.. ..#.. ...#.",
-               ".#..# #..## .#.#. #.#.# .#.#. .#### .#... ..#.. ..#.. ..#.. .....",
-               "..##. .##.# ..#.. .#.#. #...# ....# ##### ...#. ..#.. .#... .....",
-               "..... ..... ..... ..... ..... .###. ..... ..... ..... ..... ....."}},
-};
-// clang-format on
-
-using GlyphTable = std::array<uint8_t, kBuiltinGlyphs * kCellHeight>;
-
-// Throwing here is a compile error, since the table is built in a constant expression.
-constexpr GlyphTable build_builtin() {
-    GlyphTable table{};
-    std::array<bool, kBuiltinGlyphs> drawn{};
-    for (const ArtBlock& block : kArt) {
-        for (int r = 0; r < kCellHeight; ++r) {
-            const std::string_view row = block.rows[r];
-            if (row.size() != std::size_t(block.count * kCellWidth - 1))
-                throw "bad row length";
-            for (int j = 0; j < block.count; ++j) {
-                const int code = int(block.first) + j;
-                uint8_t bits = 0;
-                for (int c = 0; c < kCellWidth - 1; ++c) {
-                    const char p = row[std::size_t(j * kCellWidth + c)];
-                    if (p == '#') {
-                        bits = uint8_t(bits | (0x80 >> c));
-                    } else if (p != '.') {
-                        throw "a glyph pixel is neither '#' nor '.'";
-                    }
-                }
-                if (j + 1 < block.count && row[std::size_t(j * kCellWidth + kCellWidth - 1)] != ' ')
-                    throw "glyphs must be separated by one space";
-                table[std::size_t(code * kCellHeight + r)] = bits;
-            }
-        }
-        for (int j = 0; j < block.count; ++j) {
-            const int code = int(block.first) + j;
-            if (code >= kBuiltinGlyphs || drawn[std::size_t(code)])
-                throw "glyph drawn twice";
-            drawn[std::size_t(code)] = true;
-        }
-    }
-    for (int code = 32; code <= 126; ++code)
-        if (!drawn[std::size_t(code)])
-            throw "a printable ASCII glyph is missing";
-    // Control characters and DEL show '?'.
-    for (int code = 0; code < kBuiltinGlyphs; ++code) {
-        if (code >= 32 && code <= 126)
-            continue;
-        for (int r = 0; r < kCellHeight; ++r)
-            table[std::size_t(code * kCellHeight + r)] = table[std::size_t('?' * kCellHeight + r)];
-    }
-    return table;
-}
-
-constexpr GlyphTable kBuiltinTable = build_builtin();
-
-constexpr Font kBuiltinFont{kCellWidth, kCellHeight, kBuiltinGlyphs, 1, kBuiltinTable.data()};
 
 // ---------------------------------------------------------------------------------------------
 // PSF
@@ -267,6 +128,43 @@ int layout(const Canvas* canvas, const Font& font, int x, int y, std::string_vie
     return int(std::min<int64_t>(longest, INT_MAX));
 }
 
+
+// A PSF font's Unicode table (after its glyphs): for each glyph in turn, the code points it
+// shows (PSF1: 16-bit little-endian; PSF2: UTF-8), then sequences (after 0xFFFE / 0xFE) that
+// are skipped, ended by 0xFFFF / 0xFF. Fills out.latin for code points below 256, the first
+// glyph naming one winning. A table cut short maps what it has.
+void read_unicode_table(const uint8_t* p, std::size_t n, bool psf1, Font& out) {
+    for (uint16_t& g : out.latin) g = Font::kNoGlyph;
+    out.mapped = true;
+    const auto map = [&out](char32_t c, int glyph) {
+        if (c < 256 && out.latin[c] == Font::kNoGlyph) out.latin[c] = uint16_t(glyph);
+    };
+    std::size_t i = 0;
+    for (int glyph = 0; glyph < out.glyph_count && glyph < Font::kNoGlyph && i < n; ++glyph) {
+        bool sequence = false;
+        if (psf1) {
+            for (; i + 1 < n; i += 2) {
+                const unsigned v = unsigned(p[i]) | unsigned(p[i + 1]) << 8;
+                if (v == 0xFFFF) break;
+                if (v == 0xFFFE) sequence = true;
+                else if (!sequence) map(v, glyph);
+            }
+            i += 2;
+        } else {
+            const std::string_view s(reinterpret_cast<const char*>(p), n);
+            while (i < n && p[i] != 0xFF) {
+                if (p[i] == 0xFE) {
+                    sequence = true, ++i;
+                    continue;
+                }
+                const char32_t c = next_code_point(s, i);
+                if (!sequence) map(c, glyph);
+            }
+            ++i;
+        }
+    }
+}
+
 }  // namespace
 
 bool Font::pixel(int glyph, int x, int y) const {
@@ -280,15 +178,18 @@ bool Font::pixel(int glyph, int x, int y) const {
 }
 
 int Font::glyph_for(char32_t c) const {
+    if (mapped) {
+        if (c < 256 && latin[c] != kNoGlyph)
+            return latin[c];
+        if (latin[int('?')] != kNoGlyph)
+            return latin[int('?')];
+        return glyph_count > 0 ? 0 : -1;
+    }
     if (c < char32_t(std::max(glyph_count, 0)))
         return int(c);
     if ('?' < glyph_count)
         return '?';
     return glyph_count > 0 ? 0 : -1;
-}
-
-const Font& builtin_font() {
-    return kBuiltinFont;
 }
 
 bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& error) {
@@ -299,7 +200,8 @@ bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& er
     if (data == nullptr)
         size = 0;
     uint64_t header = 0, width = 0, height = 0, charsize = 0, count = 0;
-    if (size >= 2 && data[0] == 0x36 && data[1] == 0x04) {
+    const bool psf1 = size >= 2 && data[0] == 0x36 && data[1] == 0x04;
+    if (psf1) {
         header = 4;
         if (size < header)
             return fail(truncated("header", header, size));
@@ -349,12 +251,49 @@ bool parse_psf(const uint8_t* data, std::size_t size, Font& out, std::string& er
     out.glyph_count = int(count);
     out.bytes_per_row = int(bytes_per_row);
     out.glyphs = data + header;
+    out.mapped = false;
+    const bool table = psf1 ? (data[2] & 0x02) != 0 : (le32(data + 12) & 1) != 0;
+    if (table)
+        read_unicode_table(data + header + glyph_bytes, size - header - glyph_bytes, psf1, out);
     return true;
 }
 
 int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_view text,
               Rgb color, int scale) {
     return layout(&canvas, font, x, y, text, color, scale);
+}
+
+int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale, int x,
+                 int width, int line, int y, bool top) {
+    const std::size_t sep_len = std::strlen(sep);
+    int lines = 0;
+    for (int pass = 0; pass < 2; ++pass) {  // pass 0 counts the lines, pass 1 draws them
+        int at = top ? y : y - (lines - 1) * line, n = 0;
+        char buf[512];
+        std::size_t len = 0;
+        const char* p = text;
+        while (*p) {
+            const char* end = std::strstr(p, sep);
+            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
+            char trial[512];
+            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
+                          static_cast<int>(item), p);
+            if (len && text_width(font, trial, scale) > width) {  // this item starts the next line
+                if (pass == 1) draw_text(c, font, x, at, buf, color, scale);
+                at += line, ++n;
+                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
+            } else {
+                std::snprintf(buf, sizeof buf, "%s", trial);
+            }
+            len = std::strlen(buf);
+            p += item;
+            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
+            while (*p == ' ') ++p;
+        }
+        if (len && pass == 1) draw_text(c, font, x, at, buf, color, scale);
+        lines = len ? n + 1 : n;
+    }
+    return lines;
 }
 
 int text_width(const Font& font, std::string_view text, int scale) {

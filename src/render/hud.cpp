@@ -3,8 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 
 #include "render/raster.hpp"
+
+using noneuclid::lang::Text;
 
 namespace noneuclid::render {
 
@@ -24,10 +27,11 @@ void life(const Canvas& c, int x, int y, int size, Rgb color) {
 // The game's corner (score, level, lives) and its screen in the middle.
 void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, int margin, int line, Rgb color, Rgb dim) {
     const HudGame& g = h.game;
-    char text[64];
-    std::snprintf(text, sizeof text, "SCORE %ld", g.score);
+    const auto t = [&h](Text name) { return lang::text(name, h.language); };
+    char text[96];
+    std::snprintf(text, sizeof text, t(Text::score), g.score);
     draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin, text, color, scale);
-    std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+    std::snprintf(text, sizeof text, t(Text::level), g.level);
     draw_text(c, font, c.width() - margin - text_width(font, text, scale), margin + line, text, dim, scale);
     const int size = font.height * scale;
     for (int i = 0; i < g.lives && i < 10; ++i)
@@ -37,78 +41,49 @@ void draw_game(const Canvas& c, const Font& font, const HudInfo& h, int scale, i
     switch (g.screen) {
         case HudGame::none: return;
         case HudGame::ready:
-            centred(c, font, mid, y, "PRESS FIRE", color, big);
+            centred(c, font, mid, y, t(Text::press_fire), color, big);
             y += font.height * big + line;
-            std::snprintf(text, sizeof text, "BEST %ld", g.best);
+            std::snprintf(text, sizeof text, t(Text::best), g.best);
             centred(c, font, mid, y, text, dim, scale);
             return;
         case HudGame::over:
-            centred(c, font, mid, y, "GAME OVER", color, big);
+            centred(c, font, mid, y, t(Text::game_over), color, big);
             y += font.height * big + line;
-            std::snprintf(text, sizeof text, g.new_best ? "SCORE %ld  NEW BEST" : "SCORE %ld", g.score);
+            std::snprintf(text, sizeof text, t(g.new_best ? Text::score_new_best : Text::score), g.score);
             centred(c, font, mid, y, text, color, scale);
             if (!g.new_best) {
-                std::snprintf(text, sizeof text, "BEST %ld", g.best);
+                std::snprintf(text, sizeof text, t(Text::best), g.best);
                 centred(c, font, mid, y + line, text, dim, scale);
             }
             return;
         case HudGame::new_level:
-            std::snprintf(text, sizeof text, "LEVEL %d", g.level);
+            std::snprintf(text, sizeof text, t(Text::level), g.level);
             centred(c, font, mid, y, text, color, big);
-            centred(c, font, mid, y + font.height * big + line, curvature_word(h.K), dim, scale);
+            centred(c, font, mid, y + font.height * big + line, curvature_word(h.K, h.language), dim, scale);
             return;
     }
 }
 
-// `text` wrapped to the width at its separators (`sep`: the legend's items are two spaces
-// apart, a caption's words one), its last line's top at `bottom`; returns its lines. (A narrow
-// canvas or a large HUD otherwise cut the legend off.) No allocation: one line at a time in a
-// fixed buffer; pass 0 counts the lines, pass 1 draws them.
-int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale,
-                 int margin, int line, int bottom) {
-    const int room = c.width() - 2 * margin;
-    const std::size_t sep_len = std::strlen(sep);
-    int lines = 0;
-    for (int pass = 0; pass < 2; ++pass) {
-        int y = bottom - (lines - 1) * line, n = 0;
-        char buf[512];
-        std::size_t len = 0;
-        const char* p = text;
-        while (*p) {
-            const char* end = std::strstr(p, sep);
-            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
-            char trial[512];
-            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
-                          static_cast<int>(item), p);
-            if (len && text_width(font, trial, scale) > room) {  // this item starts the next line
-                if (pass == 1) draw_text(c, font, margin, y, buf, color, scale);
-                y += line, ++n;
-                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
-            } else {
-                std::snprintf(buf, sizeof buf, "%s", trial);
-            }
-            len = std::strlen(buf);
-            p += item;
-            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
-            while (*p == ' ') ++p;
-        }
-        if (len && pass == 1) draw_text(c, font, margin, y, buf, color, scale);
-        lines = len ? n + 1 : n;
-    }
-    return lines;
-}
-
 }  // namespace
 
-const char* curvature_word(double K) { return K > 1e-5 ? "spherical" : (K < -1e-5 ? "hyperbolic" : "flat"); }
+const char* curvature_word(double K, lang::Language language) {
+    return lang::text(K > 1e-5 ? Text::spherical : (K < -1e-5 ? Text::hyperbolic : Text::flat), language);
+}
+
+const char* projection_words(geo::Projection p, lang::Language language) {
+    constexpr Text kWords[] = {Text::equidistant, Text::stereographic, Text::gnomonic, Text::orthographic, Text::lambert};
+    static_assert(std::size(kWords) == std::size(geo::kProjections), "a projection without its words");
+    const auto i = static_cast<std::size_t>(p);
+    return i < std::size(kWords) ? lang::text(kWords[i], language) : geo::projection_name(p);
+}
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {
     const int scale = (h.scale > 0 ? h.scale : c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
     const int margin = 6 * scale, line = font.height * scale + 2 * scale;
-    char text[96];
+    char text[128];
     // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)
     std::snprintf(text, sizeof text, h.K != 0 && std::fabs(h.K) < 5e-4 ? "K = %+.2e  %s" : "K = %+.3f  %s", h.K,
-                  curvature_word(h.K));
+                  curvature_word(h.K, h.language));
     draw_text(c, font, margin, margin, text, color, scale);
     int y = margin + line;
     if (h.fps > 0) {
@@ -123,8 +98,11 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
     }
     if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
     const int bottom = c.height() - margin - font.height * scale;
-    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, line, bottom);
-    if (h.caption[0]) draw_wrapped(c, font, h.caption, " ", color, scale, margin, line, bottom - legend * line - line / 2);
+    // (A narrow canvas or a large HUD would otherwise cut the legend off.)
+    const int room = c.width() - 2 * margin;
+    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, room, line, bottom, false);
+    if (h.caption[0])
+        draw_wrapped(c, font, h.caption, " ", color, scale, margin, room, line, bottom - legend * line - line / 2, false);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 

@@ -8,6 +8,8 @@
 
 #include "render/canvas.hpp"
 #include "render/font.hpp"
+#include "geometry/projection.hpp"
+#include "lang/lang.hpp"
 
 namespace noneuclid::render {
 
@@ -32,10 +34,15 @@ struct HudInfo {
     bool large = false;         // twice the text's size (docs/accessibility.md)
     int scale = 0;              // pixels per font pixel (0: 2 on a canvas 900 tall or more, else 1)
     const char* caption = "";   // a lesson step's caption: wrapped above the legend, in the text's colour
+    lang::Language language = lang::Language::en;  // of the HUD's own words (the caller's are given translated)
 };
 
-// "spherical", "flat" or "hyperbolic": the sign of K, flat within half a Q16.16 step of 0.
-const char* curvature_word(double K);
+// "spherical", "flat" or "hyperbolic" (in `language`): the sign of K, flat within half a
+// Q16.16 step of 0.
+const char* curvature_word(double K, lang::Language language = lang::Language::en);
+
+// The projection's name as the HUD says it, in `language`.
+const char* projection_words(geo::Projection p, lang::Language language);
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color = {220, 225, 235},
               Rgb dim = {140, 150, 170});

@@ -36,12 +36,16 @@ void sentence(MeasurePanel& p, const char* s, std::size_t width) {
 
 }  // namespace
 
-MeasurePanel measure_panel(const world::GaugeReading& r) {
+MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language) {
+    using lang::Text;
+    const auto t = [language](Text name) { return lang::text(name, language); };
+    constexpr Text kNames[] = {Text::instrument_triangle, Text::instrument_circle, Text::instrument_parallels,
+                               Text::instrument_polygon};
     MeasurePanel p;
-    line(p, "%s", geo::instrument_name(r.kind));
+    line(p, "%s", t(kNames[static_cast<int>(r.kind)]));
     if (r.waiting) {
-        line(p, "fire: mark %d", r.marks + 1);
-        line(p, "of %d", r.needed);
+        line(p, t(Text::mark_of), r.marks + 1);
+        line(p, t(Text::of_needed), r.needed);
         return p;
     }
     if (r.error != geo::MeasureError::none) {
@@ -51,7 +55,7 @@ MeasurePanel measure_panel(const world::GaugeReading& r) {
     switch (r.kind) {
         case geo::Instrument::triangle:
             for (int i = 0; i < 3; ++i) line(p, "%c    %6.2f", 'A' + i, r.triangle.angle_deg[i]);
-            line(p, "sum  %6.2f", r.triangle.sum_deg);
+            line(p, "%-4s %6.2f", t(Text::angle_sum), r.triangle.sum_deg);
             line(p, "exc  %6.2f", r.triangle.excess_deg);
             line(p, "area %6.3f", r.triangle.area);
             line(p, "K*A  %6.2f", r.triangle.k_area_deg);
@@ -77,7 +81,7 @@ MeasurePanel measure_panel(const world::GaugeReading& r) {
             line(p, "a    %6.3f", r.side);
             line(p, "ang  %6.2f", r.polygon.angle_deg);
             line(p, "%s %6.2f", r.polygon.gap_deg >= 0 ? "gap " : "over", r.polygon.gap_deg >= 0 ? r.polygon.gap_deg : -r.polygon.gap_deg);
-            line(p, "closes at");
+            line(p, "%s", t(Text::closes_at));
             line(p, "K   %+7.3f", r.polygon.closing_K);
             break;
     }

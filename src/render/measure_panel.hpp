@@ -9,6 +9,7 @@
 #include "render/canvas.hpp"
 #include "render/font.hpp"
 #include "world/instruments.hpp"
+#include "lang/lang.hpp"
 
 namespace noneuclid::render {
 
@@ -19,7 +20,7 @@ struct MeasurePanel {
 };
 
 // The panel's lines for a reading.
-MeasurePanel measure_panel(const world::GaugeReading& r);
+MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language = lang::Language::en);
 // Draws it on `side` 0 (right of the disc) or 1 (left).
 void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color = {255, 225, 140},
                         Rgb dim = {170, 175, 190});

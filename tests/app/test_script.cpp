@@ -98,7 +98,7 @@ TEST(Script, AByteOrderMarkBeforeTheFirstLineIsAccepted) {
     // Only at the start: elsewhere it is a bad token like any other, and shown escaped.
     ASSERT_FALSE(app::parse_script("0 press thrust\n\xEF\xBB\xBF" "1 tap preset\n", "bom.txt", s, err));
     EXPECT_EQ(err.to_string(), "bom.txt:2: expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                               "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale) first, found '\\ufeff1'");
+                               "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale, lang) first, found '\\ufeff1'");
 }
 
 // What the file holds reaches the message escaped (world/quote.hpp) and cut to 60 characters.
@@ -117,7 +117,7 @@ TEST(Script, FileContentInMessagesIsQuoted) {
         {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
         {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},
         {mib + " press thrust\n", "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                                  "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale) first, found '" +
+                                  "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale, lang) first, found '" +
                                       std::string(59, 'w') + "…'"},
         {"scene a\x1b]0;x\x07" "b\n", "the setting 'scene' has a control character or a byte that is not UTF-8: "
                                   "'a\\x1b]0;x\\x07b'"},
@@ -151,7 +151,7 @@ TEST(Script, AControlByteInAnEventIsRefusedNotReadPast) {
         std::string message;  // the whole sentence after "c.txt:1: "
     };
     const std::string expected_time = "expected a time in seconds (a number >= 0) or a setting (scene, curvature, engine, "
-                                      "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale) first, found ";
+                                      "projection, size, format, aa, hud, font, legend, frames, best, centre, view, tissot, palette, large-hud, hud-scale, lang) first, found ";
     const Case cases[] = {
         {"1.5\0 press thrust\n"s, expected_time + "'1.5\\x00'"},
         {"1.5\0junk press thrust\n"s, expected_time + "'1.5\\x00junk'"},

@@ -385,6 +385,28 @@ TEST(Session, ATapMarksTheLiveInstrumentWhereThePixelShows) {
 }
 
 // The keys 1, 2, 3 set K, through the session, as actions.
+// The kiosk's legend names the fire button only where fire acts (the game, a scene's instruments),
+// the zoom where the curvature buttons zoom, and speaks the run's language.
+TEST(Session, TheButtonsLegendNamesFireOnlyWhereItActsInTheRunsLanguage) {
+    struct Case {
+        const char* scene;
+        const char* lang;
+        const char* has;
+        const char* lacks;
+    } cases[] = {{"kiosk", "en", "curvature +/-", "fire"},     {"asteroids", "en", "  fire  ", "zoom"},
+                 {"measure", "en", "  fire  ", "zoom"},        {"earth", "en", "zoom +/-", "fire"},
+                 {"asteroids", "de", "  Feuer  ", "fire"},     {"kiosk", "fr", "courbure +/-", "feu"}};
+    for (const Case& c : cases) {
+        app::Options o = app::defaults(app::Command::run);
+        o.scene = c.scene, o.language = c.lang;
+        world::Scene scene;
+        ASSERT_TRUE(world::builtin_scene(c.scene, o.params, scene)) << c.scene;
+        const app::SessionOptions so = app::session_options(o, scene, "buttons");
+        EXPECT_NE(so.legend.find(c.has), std::string::npos) << c.scene << " " << c.lang << ": " << so.legend;
+        EXPECT_EQ(so.legend.find(c.lacks), std::string::npos) << c.scene << " " << c.lang << ": " << so.legend;
+    }
+}
+
 TEST(Session, KeysSetKAndQuitStops) {
     app::Options o = app::defaults(app::Command::run);
     const world::Scene scene = app::load_scene(o);

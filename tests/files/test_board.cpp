@@ -62,6 +62,16 @@ TEST(Boards, EveryPiBoardWiresTheEightButtonsToMatchingHeaderPins) {
     }
 }
 
+TEST(Boards, TheLanguageIsACodeOrTheLocales) {
+    for (auto [text, want] : {std::pair{"[display]\nlanguage = \"fr\"\n", "fr"}, {"[display]\nlanguage = \"de_AT.UTF-8\"\n", "de"},
+                              {"[display]\nlanguage = \"\"\n", ""}, {"[display]\n", ""}}) {
+        Board b;
+        BoardError e;
+        ASSERT_TRUE(files::parse_board(text, "t.toml", b, e)) << e.to_string();
+        EXPECT_EQ(b.language, want) << text;
+    }
+}
+
 TEST(Boards, GenericIsKeysOnlyAndMatchesNoModel) {
     const Board b = load("generic");
     EXPECT_FALSE(b.has_gpio());
@@ -108,6 +118,7 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
         {"[display]\nfps = 0\n", "t.toml:2:7", "'fps' must be from 1 to 1000"},
         {"[display]\npalette = \"sepia\"\n", "t.toml:2:11", "expected palette = \"scene\", \"colour-blind\" or \"high-contrast\", found \"sepia\""},
         {"[display]\nlarge_hud = 2\n", "t.toml:2:13", "large_hud"},
+        {"[display]\nlanguage = \"es\"\n", "t.toml:2:12", "expected language = en, de or fr (or \"\" for the locale's), found \"es\""},
         {"[display]\none_button = \"yes\"\n", "t.toml:2:14", "one_button"},
         {"[display]\nsound = \"on\"\n", "t.toml:2:9", "sound"},
         {"[gpio]\nchip = 7\n", "t.toml:2:8", "expected a string or a list of strings for 'chip'"},
@@ -141,7 +152,7 @@ std::string write_file(const std::string& name, const std::string& text) {
 std::string fields(const Board& b) {
     std::string s = b.name + "|" + b.file + "|" + b.device + "|" + std::to_string(b.fps) + "|" + b.scene + "|" + b.engine +
                     "|" + b.projection + "|" + std::to_string(b.antialias) + std::to_string(b.hud) + "|" + b.palette +
-                    std::to_string(b.large_hud) + std::to_string(b.one_button) + std::to_string(b.sound) + "|" +
+                    std::to_string(b.large_hud) + std::to_string(b.one_button) + std::to_string(b.sound) + "|" + b.language + "|" +
                     std::to_string(b.threads) + "|" + std::to_string(b.debounce_ms) + "|" + b.evdev_device + "|" +
                     std::to_string(b.grab) + "|" + std::to_string(b.idle_seconds) + "|" + std::to_string(b.sweep_seconds) + "|" + b.attract_lesson;
     for (const std::string& m : b.models) s += "|model " + m;

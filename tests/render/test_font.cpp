@@ -180,7 +180,7 @@ TEST(FontBuiltin, GlyphForCodePoints) {
     const Font& f = builtin_font();
     EXPECT_EQ(f.glyph_for(U'A'), 'A');
     EXPECT_EQ(f.glyph_for(U'~'), '~');
-    EXPECT_EQ(f.glyph_for(U'\u00e9'), '?');
+    EXPECT_EQ(f.glyph_for(U'\u00e9'), 0xE9);  // é: drawn (German and French)
     EXPECT_EQ(f.glyph_for(U'\U0001F600'), '?');
     // Control characters and DEL look like '?'.
     for (int c : {0, 9, 27, 31, 127})
@@ -237,6 +237,62 @@ TEST(FontPsf, Psf2) {
                 f.pixel(5, int(width), 0));  // padding bits beyond the width are not pixels
         }
     }
+}
+
+// A font's Unicode table (the console's Lat15-* and Uni2-* fonts have one): code points below
+// 256 are drawn with the glyph it names; sequences are skipped; the rest, and what it does not
+// name, show its '?'. PSF2 writes the table in UTF-8, PSF1 in 16-bit words.
+TEST(FontPsf, UnicodeTablesMapLatin1) {
+    // glyph 10: é and the sequence e + combining acute (skipped); 20: A and Å; 30: '?'.
+    Psf2 p;
+    p.count = 100;
+    std::vector<uint8_t> v = make_psf2(p);
+    put32(v, 12, 1);  // has a Unicode table
+    for (int g = 0; g < 100; ++g) {
+        if (g == 10) v.insert(v.end(), {0xC3, 0xA9, 0xFE, 'e', 0xCC, 0x81});
+        if (g == 20) v.insert(v.end(), {'A', 0xC3, 0x85});
+        if (g == 30) v.push_back('?');
+        v.push_back(0xFF);
+    }
+    Font f;
+    std::string error;
+    ASSERT_TRUE(parse_psf(v.data(), v.size(), f, error)) << error;
+    EXPECT_EQ(f.glyph_for(U'é'), 10);
+    EXPECT_EQ(f.glyph_for(U'A'), 20);
+    EXPECT_EQ(f.glyph_for(U'Å'), 20);
+    EXPECT_EQ(f.glyph_for(U'e'), 30);   // only in a sequence
+    EXPECT_EQ(f.glyph_for(U'B'), 30);   // not in the table: '?'
+    EXPECT_EQ(f.glyph_for(U'€'), 30);   // past Latin-1
+    EXPECT_EQ(text_width(f, "é€"), 2 * f.width);
+
+    // PSF1: 256 glyphs of 8 rows, the table in little-endian words, 0xFFFE before a sequence.
+    std::vector<uint8_t> w = make_psf1(8, 0x02);
+    const auto word = [&w](unsigned x) { w.push_back(uint8_t(x)), w.push_back(uint8_t(x >> 8)); };
+    const std::size_t table_at = w.size();
+    for (int g = 0; g < 256; ++g) {
+        if (g == 3) word(0xE9), word(0xFFFE), word('e'), word(0x301);
+        if (g == 200) word('?');
+        if (g == 65) word('A');
+        word(0xFFFF);
+    }
+    Font f1;
+    ASSERT_TRUE(parse_psf(w.data(), w.size(), f1, error)) << error;
+    EXPECT_EQ(f1.glyph_for(U'é'), 3);
+    EXPECT_EQ(f1.glyph_for(U'A'), 65);
+    EXPECT_EQ(f1.glyph_for(U'e'), 200);
+    // A table cut short (anywhere after glyph 3's entry, 16 bytes in) maps what it has and reads
+    // nothing past the end (ASan would say so).
+    for (std::size_t cut = w.size(); cut >= table_at + 16; cut -= 7) {
+        std::vector<uint8_t> part(w.begin(), w.begin() + std::ptrdiff_t(cut));
+        Font fc;
+        ASSERT_TRUE(parse_psf(part.data(), part.size(), fc, error)) << error;
+        EXPECT_EQ(fc.glyph_for(U'é'), 3);
+    }
+    // Without the table flag, the glyph index is the code point, as before.
+    std::vector<uint8_t> plain = make_psf1(8, 0x00);
+    Font f0;
+    ASSERT_TRUE(parse_psf(plain.data(), plain.size(), f0, error)) << error;
+    EXPECT_EQ(f0.glyph_for(U'é'), 0xE9);
 }
 
 TEST(FontPsf, Errors) {

@@ -7,7 +7,7 @@ import path from 'node:path';
 
 const VIEWPORTS = [{width: 844, height: 390, dpr: 3}, {width: 390, height: 844, dpr: 3}, {width: 1280, height: 800, dpr: 1}];
 
-export async function pageChecks({browser, base, work, check, expect, sleep, waitFrames}) {
+export async function pageChecks({browser, base, work, check, expect, sleep, waitFrames, render, pngDiff, canvasPng}) {
   const open = async (query, viewport = null) => {
     const page = await browser.newPage();
     await page.open(`${base}?${query}`, viewport);
@@ -150,6 +150,49 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     }
   });
 
+  // The page's words and the HUD's in German and French (lang/texts.hpp): the labels come from
+  // the catalogue, the canvas equals render of the run's recording (which keeps the language),
+  // and the same recording replayed in English differs (so the HUD's words did change).
+  for (const [code, stop, help, fire] of [['de', 'anhalten', 'Leertaste', 'Feuer'], ['fr', 'arrêter', 'Espace tire', 'feu']]) {
+    await check(`?lang=${code}: the page's words and the HUD in ${code}; the canvas equals render of its recording`, async () => {
+      const {page, started} = await open(`lang=${code}&scene=asteroids&size=480x288`);
+      expect(started === true, 'the page did not start');
+      await waitFrames(page, 10);
+      await page.evaluate('window.noneuclid.stop()');
+      const m = await page.evaluate(`(() => ({
+        lang: document.documentElement.lang, stop: document.getElementById('stop').textContent,
+        help: document.getElementById('help').textContent, choice: document.getElementById('language').value,
+        fire: document.querySelector('#touch button[data-control=fire]').textContent}))()`);
+      expect(m.lang === code && m.choice === code, `the page's language is ${m.lang} (chosen: ${m.choice}), not ${code}`);
+      expect(m.stop === stop, `the stop button says '${m.stop}', not '${stop}'`);
+      expect(m.help.includes(help), `the help says '${m.help}', without '${help}'`);
+      expect(m.fire === fire, `the fire button says '${m.fire}', not '${fire}'`);
+      const shot = path.join(work, `lang-${code}-page.png`), rec = path.join(work, `lang-${code}.rec`);
+      await canvasPng(page, shot);
+      const text = await page.evaluate('window.noneuclid.recording()');
+      fs.writeFileSync(rec, text);
+      expect(text.includes(`lang ${code}`), `the recording does not keep the language:\n${text.slice(0, 600)}`);
+      render(['--actions', rec, '--out', path.join(work, `lang-${code}-render.png`)]);
+      const same = pngDiff(shot, path.join(work, `lang-${code}-render.png`));
+      expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
+      render(['--actions', rec, '--lang', 'en', '--out', path.join(work, `lang-${code}-en.png`)]);
+      expect(pngDiff(shot, path.join(work, `lang-${code}-en.png`)).status === 1,
+             'the same recording in English draws the same HUD: the language did not reach it');
+      expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+      await page.close();
+    });
+  }
+
+  await check('?lang=xx is refused in one sentence; the page stays in English', async () => {
+    const {page, started} = await open('lang=xx&scene=kiosk');
+    expect(started === false, 'the page started with ?lang=xx');
+    const s = await state(page);
+    expect(s.message === "--lang takes en, de or fr, not 'xx'.", `the page says '${s.message}'`);
+    const stop = await page.evaluate("document.getElementById('stop').textContent");
+    expect(stop === 'stop', `the stop button says '${stop}'`);
+    await page.close();
+  });
+
   await check('?palette=high-contrast&large-hud: a black disc and the HUD twice as tall; a copied link keeps both', async () => {
     // The share of black pixels (the high-contrast disc's background) and the height of the HUD's first
     // line of text (the rows with a lit pixel in the left sixth, left of the disc, down to the
@@ -232,6 +275,45 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     expect(!off.full && off.text === 'full screen', `after a second click: ${JSON.stringify(off)}`);
     await page.close();
   });
+
+  // A teacher's link to a lesson file beside the page, played to its end on a phone held either
+  // way and on a desktop: a timed step, a step that ends when K passes 0.5 (the + key held), and
+  // the game's step that ends on fire (the touch button).
+  fs.writeFileSync(path.join(work, 'site', 'short.toml'), [
+    'title = "A short lesson"', '', '[[step]]', 'caption = "Look."', 'scene = "kiosk"', 'curvature = 0', 'seconds = 0.5', '',
+    '[[step]]', 'caption = "Hold K+."', 'curvature = 0', 'done = "curvature above 0.5"', 'seconds = 60', '',
+    '[[step]]', 'caption = "Fire."', 'scene = "asteroids"', 'done = "fire"', ''].join('\n'));
+  for (const v of VIEWPORTS) {
+    await check(`${v.width}x${v.height}: a teacher's lesson file plays to its end (a timed step, K+ held, the fire button)`, async () => {
+      const {page, started} = await open('lesson=short.toml', v);
+      expect(started === true, 'the lesson did not start');
+      const until = async (what, test) => {
+        for (let t = 0; t < 300; ++t) {
+          const s = await state(page);
+          if (test(s)) return s;
+          await sleep(50);
+        }
+        throw new Error(`${what} did not come within 15 s: ${JSON.stringify(await state(page))}`);
+      };
+      await until('step 2', (s) => s.lessonStep === 2);
+      await page.key('keyDown', '+', 'Equal', 187);
+      await until('step 3', (s) => s.lessonStep === 3);
+      await page.key('keyUp', '+', 'Equal', 187);
+      const at = await page.evaluate(`(() => {
+        const b = document.querySelector('#touch button[data-control=fire]');
+        if (!b || !b.getClientRects().length) return null;
+        const r = b.getBoundingClientRect();
+        return {x: r.x + r.width / 2, y: r.y + r.height / 2, inside: r.bottom <= innerHeight && r.right <= innerWidth};
+      })()`);
+      expect(at && at.inside, `the fire button is not on screen in the game's step: ${JSON.stringify(at)}`);
+      await page.touch('touchStart', at.x, at.y);
+      await sleep(100);
+      await page.touch('touchEnd', at.x, at.y);
+      await until('the end of the lesson', (s) => !s.running);
+      expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+      await page.close();
+    });
+  }
 
   await check('?lesson=curvature plays the lesson\'s first step with its caption; an unknown lesson is one sentence', async () => {
     const {page, started} = await open('lesson=curvature&size=400x240');

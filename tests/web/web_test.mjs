@@ -357,7 +357,7 @@ await check('a bad option, a missing scene file, a bad pasted scene and a textur
 });
 
 // ---- 5. the page itself: screens, the slider, bad addresses, the fire button ----------------------
-await pageChecks({browser, base, work, check, expect, sleep, waitFrames});
+await pageChecks({browser, base, work, check, expect, sleep, waitFrames, render, pngDiff, canvasPng});
 
 clearTimeout(watchdog);
 await browser.close();

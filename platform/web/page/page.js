@@ -10,8 +10,11 @@
   const context = canvas.getContext('2d');
   const params = new URLSearchParams(location.search);
   const FLAGS = new Set(['aa', 'hud', 'stats', 'large-hud', 'one-button']);  // `aa`, `aa=on` or `aa=off`
-  const TOUCH = [['thrust', '▲ thrust'], ['left', '◀ left'], ['right', 'right ▶'], ['curvature_down', 'K −'],
-                 ['curvature_up', 'K +'], ['preset', 'preset K'], ['fire', 'fire']];
+  // The touch buttons: control, and the label's text (lang/texts.hpp) or the label itself.
+  const TOUCH = [['thrust', 'page_thrust'], ['left', 'page_left'], ['right', 'page_right'], ['curvature_down', 'K −'],
+                 ['curvature_up', 'K +'], ['preset', 'page_preset'], ['fire', 'page_fire']];
+  const language = window.noneuclidLanguage;  // the page's words (page_lang.js)
+  const {t, fill} = language;
 
   let mod = null;           // the engine (createNoneuclid)
   let generation = 0;       // the run the animation frames belong to
@@ -112,7 +115,7 @@
     $('download').hidden = true;
     if (call('nw_start', 'number', [words.join('\n')]) !== 0) {
       say(mod.UTF8ToString(mod._nw_message()));
-      $('status').textContent = 'not running';
+      $('status').textContent = t('page_not_running');
       return false;
     }
     say('');
@@ -120,11 +123,7 @@
     canvas.width = mod._nw_width();
     canvas.height = mod._nw_height();
     fit();
-    // The fire button and the help's "Space fires" only where fire does something: the game.
-    const game = mod._nw_has_game() === 1;
-    const fire = document.querySelector('#touch button[data-control=fire]');
-    if (fire) fire.hidden = !game;
-    $('help-fire').hidden = !game;
+    showGame();
     image = null;
     tickMs.length = 0;
     $('engine').value = mod.UTF8ToString(mod._nw_engine());
@@ -137,12 +136,25 @@
     return true;
   }
 
+  // The fire button and the help's "Space fires" only where fire does something: the game (a
+  // lesson's step may change the scene, so each frame asks).
+  let game = null;
+  function showGame() {
+    const now = mod._nw_has_game() === 1;
+    if (now === game) return;
+    game = now;
+    const fire = document.querySelector('#touch button[data-control=fire]');
+    if (fire) fire.hidden = !game;
+    $('help').textContent = t(game ? 'page_help_game' : 'page_help');
+  }
+
   function frame(mine) {
     if (mine !== generation || !running) return;
     steerCurvature();
     const t0 = performance.now();
     const more = mod._nw_tick();
     sound.frame();
+    showGame();
     tickMs.push(performance.now() - t0);
     if (tickMs.length > 60) tickMs.shift();
     showState();
@@ -158,7 +170,7 @@
     if (link.href.startsWith('blob:')) URL.revokeObjectURL(link.href);
     link.href = URL.createObjectURL(new Blob([mod.UTF8ToString(mod._nw_recording())], {type: 'text/plain'}));
     link.hidden = false;
-    $('status').textContent += ' · ended';
+    $('status').textContent += ' · ' + t('page_ended');
     while (waiting.length) waiting.shift()();
   }
 
@@ -170,8 +182,8 @@
     if (document.activeElement !== $('projection')) $('projection').value = projection;
     const ms = tickMs.reduce((a, b) => a + b, 0) / Math.max(tickMs.length, 1);
     linkState(K, projection);
-    $('status').textContent = `frame ${mod._nw_frame()} · K = ${K.toFixed(3)} · ${projection} · ` +
-        `${mod.UTF8ToString(mod._nw_engine())} engine · ${ms.toFixed(2)} ms a frame`;
+    $('status').textContent = fill('page_status', mod._nw_frame(), K.toFixed(3), projection,
+                                   mod.UTF8ToString(mod._nw_engine()), ms.toFixed(2));
   }
 
   // The address says what is seen (scene, K, projection, engine), so that a copied link shows it:
@@ -189,6 +201,7 @@
     link.set('curvature', String(Math.round(K * 1000) / 1000));
     link.set('projection', projection);
     link.set('engine', mod.UTF8ToString(mod._nw_engine()));
+    link.set('lang', language.code());
     const query = '?' + link.toString();
     if (query !== location.search) history.replaceState(null, '', query);
   }
@@ -235,7 +248,7 @@
       if (c < 0) continue;  // a control this build has not
       const b = document.createElement('button');
       b.type = 'button';
-      b.textContent = label;
+      b.textContent = t(label);
       b.dataset.control = name;
       let down = false;
       const press = (e) => {
@@ -333,7 +346,7 @@
       else document.documentElement.requestFullscreen().catch((e) => say(`full screen was refused: ${e.message}`));
     });
     document.addEventListener('fullscreenchange', () => {
-      full.textContent = document.fullscreenElement ? 'leave full screen' : 'full screen';
+      full.textContent = t(document.fullscreenElement ? 'page_leave_full_screen' : 'page_full_screen');
     });
     window.addEventListener('blur', () => {
       for (const c of keysHeld.values()) input(c, false);
@@ -419,6 +432,7 @@
     printErr: (text) => console.warn(text),
   }).then(async (m) => {
     mod = m;
+    language.load(mod, params);
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
     for (const name of new Set(TOUCH.map(([name]) => name).concat(['projection'], K_KEYS)))
       control[name] = call('nw_control', 'number', [name]);
@@ -427,9 +441,10 @@
     try {
       startWords = await wordsOfUrl();
       if (!params.has('size') && !params.has('actions')) startWords.push('--size', ...defaultSize());
+      if (!params.has('lang') && !params.has('actions')) startWords.push('--lang', language.code());
     } catch (e) {
       say(e.message);
-      $('status').textContent = 'not running';
+      $('status').textContent = t('page_not_running');
       startWords = ['--size', ...defaultSize()];  // said once: the menus start runs without the address
       readyResolve(false);
       return;
