@@ -9,7 +9,7 @@
   const canvas = $('screen');
   const context = canvas.getContext('2d');
   const params = new URLSearchParams(location.search);
-  const FLAGS = new Set(['aa', 'hud', 'stats', 'large-hud', 'one-button']);  // `aa`, `aa=on` or `aa=off`
+  const FLAGS = new Set(['aa', 'hud', 'stats', 'large-hud', 'one-button', 'sound']);  // `aa`, `aa=on` or `aa=off`
   // The touch buttons: control, and the label's text (lang/texts.hpp) or the label itself.
   const TOUCH = [['thrust', 'page_thrust'], ['left', 'page_left'], ['right', 'page_right'], ['curvature_down', 'K −'],
                  ['curvature_up', 'K +'], ['preset', 'page_preset'], ['fire', 'page_fire']];
@@ -31,7 +31,7 @@
   let kTarget = null, kHeld = -1;  // the K slider: the K it steers to, the control held for it
   let linkDue = 0;          // when the address may next be rewritten (linkState)
   let sliderDown = false;   // a pointer holds the K slider: it shows its own value, not K
-  const sound = new NoneuclidSound($('sound'), params.get('sound') === 'on');  // (sound.js)
+  const sound = new NoneuclidSound($('sound'), params.has('sound') && params.get('sound') !== 'off');  // (sound.js)
   const K_KEYS = ['hyperbolic', 'flat', 'spherical', 'preset', 'curvature_up', 'curvature_down', 'reset'];
 
   // ---- the engine's display: frames in, pixels out ------------------------------------------
@@ -85,8 +85,6 @@
         words.push('--lesson', await put(value, `no lesson file ${value} beside the page: put it there, or name a built-in lesson.`));
       } else if (key === 'actions') {
         words.push('--actions', await put(value, `no actions file ${value} beside the page: put it there, or give its address.`));
-      } else if (key === 'sound') {
-        continue;  // the page's own (sound.js)
       } else if (FLAGS.has(key)) {
         words.push(value === 'off' ? '--no-' + key : '--' + key);
       } else {
