@@ -17,6 +17,6 @@ target_link_options(noneuclid_page PRIVATE
     -sMODULARIZE=1 -sEXPORT_NAME=createNoneuclid -sENVIRONMENT=web -sALLOW_MEMORY_GROWTH=1
     -sEXPORTED_RUNTIME_METHODS=FS,ccall,UTF8ToString -sEXPORTED_FUNCTIONS=_malloc,_free
     -sFILESYSTEM=1 -sINCOMING_MODULE_JS_API=noneuclidPresent,noneuclidReadBack,print,printErr,locateFile)
-foreach(file index.html page.js page_lang.js sound.js page.css)
+foreach(file index.html page.js page_lang.js page_fit.js sound.js page.css)
     configure_file(${CMAKE_CURRENT_SOURCE_DIR}/web/page/${file} ${PROJECT_BINARY_DIR}/page/${file} COPYONLY)
 endforeach()

@@ -57,8 +57,8 @@ extern const Entry kGerman[] = {
     {Text::page_own_scene, "eine eigene Szene (TOML)"},
     {Text::page_run_scene, "diese Szene starten"},
     {Text::page_or, "oder"},
-    {Text::page_help, "Tasten: Pfeile oder WASD fliegen, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, R beginnt neu, Esc beendet den Lauf."},
-    {Text::page_help_game, "Tasten: Pfeile oder WASD fliegen, die Leertaste feuert, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, R beginnt neu, Esc beendet den Lauf."},
+    {Text::page_help, "Tasten: Pfeile oder WASD fliegen, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, R beginnt neu, Esc beendet den Lauf."},
+    {Text::page_help_game, "Tasten: Pfeile oder WASD fliegen, die Leertaste feuert, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, R beginnt neu, Esc beendet den Lauf."},
     {Text::page_loading, "lädt…"},
     {Text::page_not_running, "läuft nicht"},
     {Text::page_ended, "beendet"},
@@ -69,6 +69,8 @@ extern const Entry kGerman[] = {
     {Text::page_preset, "K-Vorgabe"},
     {Text::page_fire, "Feuer"},
     {Text::page_language, "Sprache"},
+    {Text::page_sound_on, "Ton: an"},
+    {Text::page_sound_off, "Ton: aus"},
 };
 extern const int kGermanCount = sizeof kGerman / sizeof kGerman[0];
 

@@ -57,8 +57,8 @@ extern const Entry kFrench[] = {
     {Text::page_own_scene, "votre propre scène (TOML)"},
     {Text::page_run_scene, "lancer cette scène"},
     {Text::page_or, "ou"},
-    {Text::page_help, "Touches : flèches ou WASD pour voler, + et − (ou ] et [) courbent l'espace, 1 2 3 mettent K à −1, 0, +1, P passe à la projection suivante, H le HUD, R recommence, Échap termine la partie."},
-    {Text::page_help_game, "Touches : flèches ou WASD pour voler, Espace tire, + et − (ou ] et [) courbent l'espace, 1 2 3 mettent K à −1, 0, +1, P passe à la projection suivante, H le HUD, R recommence, Échap termine la partie."},
+    {Text::page_help, "Touches : flèches ou WASD pour voler, + et − (ou ] et [) courbent l'espace, 1 2 3 mettent K à −1, 0, +1, P passe à la projection suivante, H le HUD, N coupe le son, R recommence, Échap termine la partie."},
+    {Text::page_help_game, "Touches : flèches ou WASD pour voler, Espace tire, + et − (ou ] et [) courbent l'espace, 1 2 3 mettent K à −1, 0, +1, P passe à la projection suivante, H le HUD, N coupe le son, R recommence, Échap termine la partie."},
     {Text::page_loading, "chargement…"},
     {Text::page_not_running, "arrêté"},
     {Text::page_ended, "terminé"},
@@ -69,6 +69,8 @@ extern const Entry kFrench[] = {
     {Text::page_preset, "K préréglé"},
     {Text::page_fire, "feu"},
     {Text::page_language, "langue"},
+    {Text::page_sound_on, "son : activé"},
+    {Text::page_sound_off, "son : coupé"},
 };
 extern const int kFrenchCount = sizeof kFrench / sizeof kFrench[0];
 

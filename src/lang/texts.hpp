@@ -66,8 +66,8 @@
     X(page_own_scene, "your own scene (TOML)")                                                      \
     X(page_run_scene, "run this scene")                                                             \
     X(page_or, "or")                                                                                \
-    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, R reset, Esc ends the run.") \
-    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, R reset, Esc ends the run.") \
+    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
+    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
     X(page_loading, "loading…")                                                                     \
     X(page_not_running, "not running")                                                              \
     X(page_ended, "ended")                                                                          \
@@ -77,4 +77,6 @@
     X(page_right, "right ▶")                                                                        \
     X(page_preset, "preset K")                                                                      \
     X(page_fire, "fire")                                                                            \
-    X(page_language, "language")
+    X(page_language, "language")                                                                    \
+    X(page_sound_on, "sound: on")                                                                   \
+    X(page_sound_off, "sound: off")

@@ -29,7 +29,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} -L -N ${BUILD} OUTPUT_VARIABLE cache)
 string(REGEX MATCH "CMAKE_INSTALL_PREFIX:PATH=([^\n]*)" _ "${cache}")
 set(configured ${CMAKE_MATCH_1})
 foreach(want "ExecStart=${configured}/bin/noneuclid run --display fbdev" "Conflicts=getty@tty1.service"
-             "TTYPath=/dev/tty1" "Restart=always" "SupplementaryGroups=video input gpio" "StandardInput=tty"
+             "TTYPath=/dev/tty1" "Restart=always" "SupplementaryGroups=video input gpio audio" "StandardInput=tty"
              "StateDirectory=noneuclid")
     string(FIND "${unit}" "${want}" at)
     if(at LESS 0)

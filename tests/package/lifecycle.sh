@@ -100,7 +100,7 @@ lifecycle() {
         return
     fi
     ok "dpkg -i installs the package (the older build, $version~older)"
-    check "the user noneuclid is in the groups video, input and gpio" in_groups video input gpio
+    check "the user noneuclid is in the groups video, input, gpio and audio" in_groups video input gpio audio
     check "the user has no shell, and /var/lib/noneuclid as home" \
         [ "$(ct getent passwd noneuclid | cut -d: -f6,7)" = /var/lib/noneuclid:/usr/sbin/nologin ]
     check "/var/lib/noneuclid belongs to noneuclid" [ "$(ct stat -c '%U:%G %a' /var/lib/noneuclid)" = "noneuclid:noneuclid 755" ]
@@ -148,9 +148,9 @@ UNIT
     check "the kiosk keeps running on the headless display" wait_for 10 is_active active
     local pid gids="" g
     pid=$(main_pid)
-    for g in video input gpio; do gids="$gids $(ct getent group "$g" | cut -d: -f3)"; done
+    for g in video input gpio audio; do gids="$gids $(ct getent group "$g" | cut -d: -f3)"; done
     # shellcheck disable=SC2086  # one word per group id
-    check "the running kiosk has the user's uid and the groups video, input and gpio (gids$gids)" runs_as "$pid" "$uid" $gids
+    check "the running kiosk has the user's uid and the groups video, input, gpio and audio (gids$gids)" runs_as "$pid" "$uid" $gids
     check "the kiosk is given STATE_DIRECTORY=/var/lib/noneuclid" has_env "$pid" STATE_DIRECTORY=/var/lib/noneuclid
     # The user's state (a high-score table with a game in it, as the kiosk would have written
     # it) and board override, which an upgrade must keep.

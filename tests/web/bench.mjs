@@ -66,7 +66,7 @@ console.log('');
 console.log('| file | bytes | gzip -9 |');
 console.log('|---|---:|---:|');
 let total = 0, totalGz = 0;
-for (const f of ['noneuclid.wasm', 'noneuclid.js', 'page.js', 'page_lang.js', 'sound.js', 'index.html', 'page.css']) {
+for (const f of ['noneuclid.wasm', 'noneuclid.js', 'page.js', 'page_lang.js', 'page_fit.js', 'sound.js', 'index.html', 'page.css']) {
   const bytes = fs.readFileSync(path.join(opt.page, f));
   const gz = zlib.gzipSync(bytes, {level: 9}).length;
   total += bytes.length, totalGz += gz;

@@ -278,23 +278,8 @@
 
   // The canvas, as large as #stage allows with the run's aspect (CSS pixels; the canvas keeps
   // the run's own pixels).
-  function fit() {
-    const stage = $('stage');
-    const scale = Math.min(stage.clientWidth / canvas.width, stage.clientHeight / canvas.height);
-    if (!(scale > 0)) return;
-    canvas.style.width = Math.floor(canvas.width * scale) + 'px';
-    canvas.style.height = Math.floor(canvas.height * scale) + 'px';
-  }
-  // The run's size when the address gives none: the world's 5:3 as large as #stage allows, in
-  // the screen's own pixels (CSS pixels times devicePixelRatio, so that a high-density screen
-  // shows it sharp; at most 1600 wide), and the HUD's scale that makes its 8-pixel text at least
-  // 9 CSS pixels tall.
-  function pageSize() {
-    const stage = $('stage');
-    const css = Math.max(240, Math.min(stage.clientWidth, stage.clientHeight * 5 / 3));
-    const width = Math.max(240, Math.min(1600, Math.floor(css * (window.devicePixelRatio || 1) / 10) * 10));
-    return {width, height: width * 3 / 5, hudScale: Math.max(1, Math.min(8, Math.ceil(9 * width / (8 * css))))};
-  }
+  const fit = () => window.noneuclidFit.fit(canvas, $('stage'));       // (page_fit.js)
+  const pageSize = () => window.noneuclidFit.pageSize($('stage'));
   let sizeChosen = false;  // the page chose the run's size (the address gave none): it follows #stage
   function defaultSize() {
     const s = pageSize();
@@ -431,6 +416,7 @@
   }).then(async (m) => {
     mod = m;
     language.load(mod, params);
+    sound.show();
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);
     for (const name of new Set(TOUCH.map(([name]) => name).concat(['projection'], K_KEYS)))
       control[name] = call('nw_control', 'number', [name]);

@@ -2,7 +2,8 @@
 // (nw_sound_* in page_api.cpp), played here with Web Audio, one AudioBuffer a frame queued back
 // to back. Off until the sound button or ?sound=on turns it on; a browser lets a page sound only
 // after a click or a key, so the AudioContext is resumed on the first one. page.js calls
-// attach() after each start of a run and frame() after each tick.
+// attach() after each start of a run, frame() after each tick, and show() once the page's
+// language is known.
 'use strict';
 class NoneuclidSound {
   constructor(button, on) {
@@ -15,7 +16,6 @@ class NoneuclidSound {
     button.addEventListener('click', () => this.set(!this.on));
     const wake = () => { if (this.on) this.start(); };
     for (const type of ['pointerdown', 'keydown']) window.addEventListener(type, wake, true);
-    this.show();
   }
   start() {
     if (!this.context) this.context = new AudioContext();
@@ -27,8 +27,9 @@ class NoneuclidSound {
     if (this.mod) this.attach(this.mod);
     this.show();
   }
+  // The button's words (page_lang.js: page.js calls this once the page's language is known).
   show() {
-    this.button.textContent = this.on ? 'sound: on' : 'sound: off';
+    this.button.textContent = window.noneuclidLanguage.t(this.on ? 'page_sound_on' : 'page_sound_off');
     this.button.setAttribute('aria-pressed', String(this.on));
   }
   // A run started: the engine renders sound for it if it is on.
