@@ -127,7 +127,8 @@ constexpr Key kKeys[] = {
     {"3", "spherical"},          {"p", "projection"},     {"P", "projection"},    {"h", "hud"},
     {"H", "hud"},                {"r", "reset"},          {"R", "reset"},         {" ", "fire"},
     {"m", "instrument"},         {"M", "instrument"},     {"Escape", "quit"},
-    {"n", "mute"},               {"N", "mute"},
+    {"n", "mute"},               {"N", "mute"},           {".", "strength_up"},   {">", "strength_up"},
+    {",", "strength_down"},      {"<", "strength_down"},
 };
 
 bool running() { return g_run && !g_run->done; }

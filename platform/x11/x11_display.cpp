@@ -269,6 +269,8 @@ bool control_of(KeySym s, world::Control& c) {
         case XK_h: case XK_H: c = Control::hud; return true;
         case XK_m: case XK_M: c = Control::instrument; return true;
         case XK_n: case XK_N: c = Control::mute; return true;
+        case XK_period: case XK_greater: c = Control::strength_up; return true;
+        case XK_comma: case XK_less: c = Control::strength_down; return true;
         case XK_r: case XK_R: c = Control::reset; return true;
         case XK_space: case XK_Control_L: case XK_Control_R: c = Control::fire; return true;
         default: return false;

@@ -12,6 +12,8 @@
 #include "render/measure_panel.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/worker_pool.hpp"
+#include "uneven/draw.hpp"
+#include "uneven/dump.hpp"
 #include "world/earth.hpp"
 
 namespace noneuclid::app {
@@ -25,6 +27,22 @@ render::Rgb curvature_tint(double K) {
     auto mix = [&](int i) { return static_cast<uint8_t>(from[i] + (to[i] - from[i]) * a + 0.5); };
     return {mix(0), mix(1), mix(2)};
 }
+
+// What draws a world: the engines' scratch (render/draw_world.hpp, parallel_frame.hpp) for a
+// world of constant K, uneven::Drawing (one thread) for an uneven world.
+template <class W>
+constexpr bool kUneven = requires { W::kUneven; };
+struct NoScratch {};
+template <class W>
+struct Scratch {
+    using one = render::DrawScratch<typename W::scalar, typename W::engine>;
+    using parallel = render::ParallelScratch<typename W::scalar, typename W::engine>;
+};
+template <>
+struct Scratch<uneven::World> {
+    using one = uneven::Drawing;
+    using parallel = NoScratch;
+};
 
 template <class W>
 class EngineSession final : public Session {
@@ -44,7 +62,8 @@ public:
           dt_(o.dt) {
         sound_.muted = o.muted;
         scratch_.prepare(world_);
-        if (pool_.size() > 1) parallel_.prepare(world_, pool_);
+        if constexpr (!kUneven<W>)
+            if (pool_.size() > 1) parallel_.prepare(world_, pool_);
     }
 
     void queue(world::InputEvent e) override {
@@ -77,6 +96,7 @@ public:
     }
 
     bool mark_at(double x, double y, int width, int height) override {
+        if constexpr (kUneven<W>) return false;  // (no instruments in an uneven world yet)
         const double K = static_cast<double>(world_.K), R = static_cast<double>(world_.R);
         const geo::Projection p = options_.draw.projection;
         const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p);
@@ -116,7 +136,9 @@ public:
         if (layers == Layers::backdrop_and_grids) o.bodies = false;
         if (layers == Layers::grids_tinted)
             o.bodies = false, o.tint_grids = true, o.grid_tint = curvature_tint(static_cast<double>(world_.K));
-        if (pool_.size() > 1)
+        if constexpr (kUneven<W>)
+            scratch_.draw(c, world_, o, backdrop);
+        else if (pool_.size() > 1)
             render::draw_world(c, world_, o, parallel_, pool_, backdrop);
         else
             render::draw_world(c, world_, o, scratch_, backdrop);
@@ -134,6 +156,10 @@ public:
         info.fps = options_.show_fps ? fps_ : 0;
         info.scene = options_.scene_name.c_str();
         info.projection = render::projection_words(options_.draw.projection, options_.language);
+        if constexpr (kUneven<W>)
+            info.projection = lang::text(uneven::is_chart_view(options_.draw.projection) ? lang::Text::view_chart
+                                                                                          : lang::Text::view_inhabitant,
+                                         options_.language);
         const bool attract = autopilot_.active() || replayed_attract_;
         using lang::Text;
         info.controls = attract ? lang::text(world_.game().on() ? Text::legend_attract_game : Text::legend_attract,
@@ -176,6 +202,10 @@ private:
     // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
     // zoom ends, that it ends there (docs/earth.md).
     bool zoom_note(char* out, std::size_t size) const {
+        if constexpr (kUneven<W>) {  // an uneven world's line: its bumps' gain
+            std::snprintf(out, size, lang::text(lang::Text::bump_gain, options_.language), world_.gain());
+            return true;
+        }
         const auto z = world_.zoom();
         if (!z.on) return false;
         const double km = 3.14159265358979323846 * world::kEarthRadiusKm * std::sqrt(z.z);
@@ -222,6 +252,13 @@ private:
         if (!e.pressed) return;
         switch (e.control) {
             case world::Control::projection: {
+                if constexpr (kUneven<W>) {  // its two views, in turn
+                    options_.draw.projection = uneven::is_chart_view(options_.draw.projection)
+                                                   ? geo::Projection::azimuthal_equidistant
+                                                   : geo::Projection::stereographic;
+                    record(ScriptEvent::tap, e.control);
+                    break;
+                }
                 const int count = static_cast<int>(std::size(geo::kProjections));
                 int i = 0;
                 while (i < count && geo::kProjections[i] != options_.draw.projection) ++i;
@@ -262,7 +299,7 @@ private:
         v.game = g.on();
         if (v.game) {
             v.ready = g.phase == world::GamePhase::ready;
-            v.target = g.aim(world_, v.aim, v.distance);
+            if constexpr (!kUneven<W>) v.target = g.aim(world_, v.aim, v.distance);
             v.range = world_.scene().game.bullet_range;
         }
         return v;
@@ -330,8 +367,8 @@ private:
     render::WorkerPool pool_;
     Autopilot autopilot_;
     double dt_;  // world seconds a step: the clock (World::step)
-    render::DrawScratch<T, typename W::engine> scratch_;
-    render::ParallelScratch<T, typename W::engine> parallel_;
+    typename Scratch<W>::one scratch_;
+    typename Scratch<W>::parallel parallel_;
     world::InputEvent queue_[kQueue];
     int queued_ = 0;
     bool user_held_[world::kControlCount] = {};
@@ -344,6 +381,8 @@ private:
 
 std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores) {
+    if (!scene.bumps.empty())  // an uneven world: its own engine, in double (docs/uneven.md)
+        return std::make_unique<EngineSession<uneven::World>>(scene, options, font, recorder, scores);
     return world::with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
         return std::make_unique<EngineSession<W>>(scene, options, font, recorder, scores);
     });

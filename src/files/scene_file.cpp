@@ -282,6 +282,25 @@ void read_measure(const toml::table& t, int index, world::Scene& scene) {
     scene.measures.push_back(d);
 }
 
+// [[bump]]: a hill or a mass of an uneven world (world/scene.hpp's SceneBump, docs/uneven.md).
+void read_bump(const toml::table& t, int index, world::Scene& scene) {
+    const std::string context = "bump " + std::to_string(index + 1) + ": ";
+    const Reader r(t, context);
+    r.only({"kind", "centre", "width", "strength"});
+    world::SceneBump b;
+    const std::string kind = r.string("kind", "");
+    if (kind != "hill" && kind != "mass")
+        throw Bad{t.source(), context + "expected kind = \"hill\" or \"mass\", found " +
+                                  (kind.empty() ? std::string("none") : "\"" + world::printable(kind) + "\"")};
+    b.mass = kind == "mass";
+    r.pair("centre", b.r, b.theta_deg, 0, 1e6, "r, theta in degrees");
+    b.width = r.number("width", b.width, -1e6, 1e6, "chart units");
+    b.strength = r.number("strength", b.strength, -1e6, 1e6, b.mass ? "alpha" : "a");
+    std::string why;
+    if (!world::bump_within_ranges(b, index, scene, why)) throw Bad{t.source(), why};
+    scene.bumps.push_back(b);
+}
+
 // backdrop = "earth" (with centre = [lat, lon], default Greenwich): the Earth's graticule and
 // coastlines about that place (world/earth.hpp, the whole globe) in place of a [[grid]]: grid
 // bodies, so that the game's collisions and the controls pass them by.
@@ -308,13 +327,14 @@ void read_backdrop(const Reader& r, const toml::table& root, world::Scene& s) {
 void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
-            "game", "measure", "backdrop", "centre"});
+            "game", "measure", "backdrop", "centre", "bump", "strength_rate"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
     s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, world::Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
     s.turn_rate_deg = r.number("turn_rate", s.turn_rate_deg, 0, 1e5, "degrees per second");
     s.curvature_rate = r.number("curvature_rate", s.curvature_rate, 0, 100, "per second");
     s.sweep_rate = r.number("sweep_rate", 0, 0, 100, "per second");
+    s.strength_rate = r.number("strength_rate", s.strength_rate, 0, 100, "gain per second");
     if (const toml::node* p = root.get("presets")) {
         const toml::array* a = p->as_array();
         if (!a || a->empty()) throw Bad{p->source(), std::string("expected presets = [K, ...], found ") + type_name(*p)};
@@ -338,6 +358,12 @@ void read_scene(const toml::table& root, world::Scene& s, Images& images) {
         read_game(*t, s.game, images);
         std::string why;
         if (!world::add_game_slots(s, why)) throw Bad{t->source(), "game: " + why};
+    }
+    if (const toml::array* bumps = tables(root, "bump")) {
+        int i = 0;
+        for (const toml::node& b : *bumps) read_bump(*b.as_table(), i++, s);
+        std::string why;
+        if (!world::uneven_scene_fits(s, why)) throw Bad{bumps->source(), why};
     }
 }
 

@@ -26,6 +26,10 @@
     X(gnomonic, "gnomonic")                                                                         \
     X(orthographic, "orthographic")                                                                 \
     X(lambert, "lambert")                                                                           \
+    /* an uneven world's two views, and its bumps' gain (src/uneven) */                            \
+    X(view_chart, "chart")                                                                          \
+    X(view_inhabitant, "inhabitant's view")                                                         \
+    X(bump_gain, "bumps x%.2f")                                                                     \
     /* the legends: the desktop's keys, the kiosk's buttons, the zoom's, one button, attract */    \
     X(legend_keys, "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
     X(legend_buttons, "thrust  left/right  fire  curvature +/-  preset  reset")                     \

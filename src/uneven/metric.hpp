@@ -81,7 +81,8 @@ struct Metric {
     // The Gaussian curvature at x.
     double curvature(Vec2 x) const {
         const MetricAt m = at(x);
-        return -std::exp(-2 * m.psi) * m.laplacian;
+        const double k = -std::exp(-2 * m.psi) * m.laplacian;
+        return std::isfinite(k) ? k : 0;  // (0 past the edge of the Poincare disc, K < 0)
     }
 };
 

@@ -12,13 +12,13 @@ namespace noneuclid::world {
 
 enum class Control : uint8_t {
     thrust, left, right, curvature_up, curvature_down, preset, reset,  // = world::Action, same order
-    hyperbolic, flat, spherical, fire, instrument,
+    hyperbolic, flat, spherical, fire, instrument, strength_up, strength_down,
     projection,  // next projection (on press)
     hud,         // HUD on/off (on press)
     quit,        // leave the program (on press; for keyboards, not kiosk buttons)
     mute,        // sound off/on (on press; app/sound.hpp)
 };
-inline constexpr int kControlCount = 16;
+inline constexpr int kControlCount = 18;
 static_assert(static_cast<int>(Control::thrust) == static_cast<int>(Action::thrust) &&
               static_cast<int>(Control::left) == static_cast<int>(Action::turn_left) &&
               static_cast<int>(Control::right) == static_cast<int>(Action::turn_right) &&
@@ -29,14 +29,15 @@ static_assert(static_cast<int>(Control::thrust) == static_cast<int>(Action::thru
               static_cast<int>(Control::spherical) == static_cast<int>(Action::spherical) &&
               static_cast<int>(Control::fire) == static_cast<int>(Action::fire) &&
               static_cast<int>(Control::instrument) == static_cast<int>(Action::instrument) &&
+              static_cast<int>(Control::strength_down) == static_cast<int>(Action::strength_down) &&
               static_cast<int>(Control::projection) == kActionCount,
               "the first controls are the world's actions, in the same order");
 
 inline const char* control_name(Control c) {
     static const char* const names[] = {"thrust",     "left", "right",     "curvature_up", "curvature_down",
                                         "preset",     "reset", "hyperbolic", "flat",        "spherical",
-                                        "fire",       "instrument", "projection", "hud",  "quit",
-                                        "mute"};
+                                        "fire",       "instrument", "strength_up", "strength_down", "projection", "hud",
+                                        "quit",       "mute"};
     return names[static_cast<int>(c)];
 }
 inline bool parse_control(const std::string& s, Control& out) {

@@ -1,6 +1,7 @@
 #include "world/ranges.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "world/quote.hpp"
@@ -56,6 +57,65 @@ bool body_within_ranges(const SceneBody& b, double R, std::string& why) {
         return false;
     }
     return true;
+}
+
+bool bump_within_ranges(const SceneBump& b, int index, const Scene& scene, std::string& why) {
+    const std::string name = std::string("bump ") + std::to_string(index + 1) + " (" + (b.mass ? "mass" : "hill") + "): ";
+    if (index >= Ranges::kBumps) {
+        why = name + "a scene may have at most " + std::to_string(Ranges::kBumps) + " bumps: remove some";
+        return false;
+    }
+    const double reach = std::min(scene.limit_radius, Ranges::kBumpReach);
+    if (!(b.r >= 0 && b.r <= reach)) {
+        why = name + "its centre at r = " + number(b.r) + " is outside the world, which reaches " + number(reach) +
+              " (the limit radius, or 120 degrees of the sphere at K = 1): move it nearer O";
+        return false;
+    }
+    if (!(b.width >= Ranges::kBumpWidth[0] && b.width <= Ranges::kBumpWidth[1])) {
+        why = name + "width = " + number(b.width) + " is outside " + number(Ranges::kBumpWidth[0]) + " to " +
+              number(Ranges::kBumpWidth[1]) + ": give a width in that range";
+        return false;
+    }
+    const double most = b.mass ? Ranges::kMass : Ranges::kHill;
+    if (!(b.strength >= -most && b.strength <= most)) {
+        why = name + "strength = " + number(b.strength) + " is outside -" + number(most) + " to " + number(most) +
+              (b.mass ? " (a mass's cone closes up at 1)" : " (a hill stretches lengths e^strength times)") +
+              ": give a strength in that range";
+        return false;
+    }
+    return true;
+}
+
+bool uneven_scene_fits(const Scene& scene, std::string& why) {
+    if (scene.game.on) {
+        why = "a scene with bumps cannot have a game yet: remove the [game] table or the bumps";
+        return false;
+    }
+    if (!scene.measures.empty()) {
+        why = "a scene with bumps cannot have instruments yet: remove the [[measure]] tables or the bumps";
+        return false;
+    }
+    // The chart has no point at the sphere's antipode: the uneven world's limit circle stops
+    // short of it (uneven/world.hpp), at 120 degrees of the sphere.
+    const double cut = scene.curvature > 0 ? 2 * 3.14159265358979323846 / 3 / std::sqrt(scene.curvature) : 1e300;
+    const double reach = std::min(scene.limit_radius, cut);
+    for (const SceneBody& b : scene.bodies)
+        if (b.r > reach) {
+            why = "body " + quote(b.name) + ": at r = " + number(b.r) + " it lies past " + number(reach) +
+                  ", where the uneven world's chart ends at K = " + number(scene.curvature) +
+                  " (120 degrees of the sphere, short of the antipode, where the metric is singular): move it nearer O";
+            return false;
+        }
+    return true;
+}
+
+double bump_gain_most(const Scene& scene) {
+    double g = Ranges::kGain;
+    for (const SceneBump& b : scene.bumps) {
+        const double most = b.mass ? Ranges::kMass : Ranges::kHill;
+        if (b.strength != 0) g = std::min(g, most / std::fabs(b.strength));
+    }
+    return g;
 }
 
 bool within_ranges(const Scene& scene, std::string& why) {

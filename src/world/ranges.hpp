@@ -29,6 +29,18 @@ struct Ranges {
     // The fastest a body moves, world units per second: acceleration and thrust stop there.
     // A step (1/60 s) is then at most a third of a unit.
     static constexpr double kSpeed = 20;
+    // An uneven world's bumps (src/uneven, docs/uneven.md): at most kBumps; each width from
+    // kBumpWidth[0] to [1] chart units (narrower, the integrator's step would need to shrink
+    // with it); a hill's strength within +-kHill (e^1.5: lengths 4.5 times stretched at its top)
+    // and a mass's within +-kMass (a cone of 2 pi alpha; at 1 its apex would be a cylinder's
+    // end). Centres within kBumpReach of O: the chart the uneven world runs in reaches 120
+    // degrees of the sphere at K = 1.
+    static constexpr int kBumps = 8;
+    static constexpr double kBumpWidth[2] = {0.1, 3.0};
+    static constexpr double kHill = 1.5, kMass = 0.9;
+    static constexpr double kBumpReach = 2 * 3.14159265358979323846 / 3;
+    // The gain of the strength keys: at most this (or where a bump reaches its range first).
+    static constexpr double kGain = 2;
 };
 
 // Whether the body ever moves (a velocity, an acceleration, the ship's thrust, or a game's
@@ -43,6 +55,15 @@ double body_reach(const SceneBody& b, double R);
 // within kBodyRadius of it (a grid line's excepted), its reach within kReach, its speed within
 // kSpeed; false with a sentence in `why` (no full stop) that ends with what to change.
 bool body_within_ranges(const SceneBody& b, double R, std::string& why);
+
+// Whether bump `index` (from 0) of an uneven world is within the ranges above, the scene's
+// limit radius and the count; false with a sentence in `why` (no full stop) that ends with what
+// to change. And whether an uneven scene's bodies sit where the chart has a point and it asks
+// for nothing the uneven world has not (a game, instruments).
+bool bump_within_ranges(const SceneBump& b, int index, const Scene& scene, std::string& why);
+bool uneven_scene_fits(const Scene& scene, std::string& why);
+// The most the strength keys' gain may reach: kGain, or where a bump would leave its range.
+double bump_gain_most(const Scene& scene);
 
 // The same for every body of the scene, the sentence naming the first body out of range.
 bool within_ranges(const Scene& scene, std::string& why);

@@ -109,6 +109,17 @@ struct MeasureDecl {
 };
 inline constexpr int kMeasureMaxSides = 12, kMeasureMaxAround = 12;
 
+// A bump of an uneven world (a scene file's [[bump]]; src/uneven, docs/uneven.md): a hill
+// (a Gaussian bump of the metric's log, strength a) or a mass (a smoothed cone, strength alpha:
+// 2 pi alpha of curvature in all), centred where a body at (r, theta) would be, `width` wide in
+// chart units. A scene with any bump is an uneven world.
+struct SceneBump {
+    bool mass = false;
+    double r = 0, theta_deg = 0;
+    double width = 0.5;
+    double strength = 0;
+};
+
 // Zoom by curvature (the earth scene, world/earth.hpp; docs/earth.md): the curvature keys
 // scale the picture instead of bending it. The zoom is a curvature z, the sphere the Earth is
 // at that scale: a level's bodies were placed for the sphere of its own curvature, a place at
@@ -145,6 +156,8 @@ struct Scene {
     Zoom zoom;                     // zoom.on(): the curvature keys zoom (the earth scene)
     GameSettings game;             // game.on: the Asteroids game runs in this scene
     std::vector<MeasureDecl> measures;  // instruments shown from the start (the live one is extra)
+    std::vector<SceneBump> bumps;  // any: the world is uneven (src/uneven)
+    double strength_rate = 0.5;    // the bumps' strength keys: their gain changes this much a second
 };
 
 // Parameters of the parametric built-in scenes.

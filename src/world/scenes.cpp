@@ -293,6 +293,30 @@ bool add_radial_grid(Scene& scene, int lines, double length, double step, Rgb co
 namespace {
 
 // The built-in scenes: name, what it shows (`noneuclid scenes`, --help), and how it is made.
+// Uneven worlds (src/uneven, docs/uneven.md). lens: a mass between the ship at O and a field of
+// bodies behind it, which the inhabitant's view shows twice; hills: two hills and a dip that the
+// grid's geodesics bend through.
+void lens(Scene& s) {
+    s.curvature = 0;
+    axis_grid(s);
+    s.bumps.push_back({true, 1.2, 0, 0.15, 0.35});
+    s.bodies.push_back(place(ship(), 0, 0, 0, 0, 0, 0));
+    const Rgb colors[] = {{255, 200, 64}, {64, 220, 120}, {120, 160, 255}, {230, 120, 230}, {255, 255, 255}};
+    const char* names[] = {"square 1", "square 2", "square 3", "square 4", "square 5"};
+    for (int i = 0; i < 5; ++i)
+        s.bodies.push_back(place(polygon(names[i], 4, 0.12, 45, colors[i]), 2.5, -22 + 11 * i, 0, 0.03, 90, 10));
+}
+void hills(Scene& s) {
+    s.curvature = 0;
+    axis_grid(s);
+    s.bumps.push_back({false, 1.1, 45, 0.45, 0.8});
+    s.bumps.push_back({false, 1.4, 200, 0.5, -0.6});
+    s.bumps.push_back({false, 1.6, 300, 0.35, 0.6});
+    s.bodies.push_back(place(ship(), 0.3, 30, 90, 0, 90, 0));
+    s.bodies.push_back(place(polygon("square", 4, 0.2, 45, {255, 200, 64}), 1.5, 20, 0, 0.15, 110, 10));
+    s.bodies.push_back(place(polygon("triangle", 3, 0.2, 90, {64, 220, 120}), 1.8, 140, 0, 0.12, 230, -15));
+}
+
 struct SceneRow {
     const char* name;
     const char* about;
@@ -317,6 +341,10 @@ const SceneRow kScenes[] = {
          earth_zoom_scene(s, p.centre_lat, p.centre_lon, p.view_km, p.tissot);
          s.bodies.push_back(place(ship(), 0, 0, 90, 0, 90, 0));  // to fly over it (figure 3 leaves it out)
      }},
+    {"lens", "uneven: a mass between the ship and five squares, seen twice from O (P: the chart or the inhabitant's view; < > its strength)",
+     [](Scene& s, const SceneParams&) { lens(s); }},
+    {"hills", "uneven: hills and a dip that the grid's geodesics bend through (P: the chart or the inhabitant's view; < > their strength)",
+     [](Scene& s, const SceneParams&) { hills(s); }},
     {"stress", "many bodies of many vertices (--bodies, --vertices, --tessellation)", [](Scene& s, const SceneParams& p) { stress(s, p); }},
 };
 

@@ -56,12 +56,13 @@ using geo::Pose;
 // set to -1, 0 or +1 (the desktop's keys 1, 2, 3). Fire shoots on its press and again each
 // cooldown while held (world/game.hpp); in a scene without a game it does nothing. Instrument
 // cycles the live instrument (world/instruments.hpp: triangle, circle, parallels, polygon, off);
-// while one is on, fire drops a mark where the ship is instead of shooting.
+// while one is on, fire drops a mark where the ship is instead of shooting. Strength up and down
+// (held) turn an uneven world's bumps (src/uneven); a world of constant K has none.
 enum class Action : uint8_t {
     thrust, turn_left, turn_right, curvature_up, curvature_down, next_preset, reset, hyperbolic, flat, spherical,
-    fire, instrument
+    fire, instrument, strength_up, strength_down
 };
-inline constexpr int kActionCount = 12;
+inline constexpr int kActionCount = 14;
 inline const char* action_name(Action a) {
     static const char* const names[] = {"thrust", "left",       "right", "curvature_up", "curvature_down", "preset",
                                         "reset",  "hyperbolic", "flat",  "spherical",    "fire",

@@ -16,6 +16,7 @@
 #include "render/measure_panel.hpp"
 #include "app/frame_loop.hpp"
 #include "app/memory_display.hpp"
+#include "uneven/draw.hpp"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -232,6 +233,33 @@ TEST(NoAllocation, TheGameAllocatesNothingPerFrame) {
 TEST(NoAllocation, TheShipOverTheEarthAllocatesNothingPerFrame) {
     EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1, "earth"), 0);
     EXPECT_EQ(loop_allocations(world::engine_named("double"), 2, "earth"), 0);
+}
+
+// An uneven world (src/uneven): in the frame loop with the keys, and in both views with its
+// bumps' strength and K turned every frame, so that every cache (the field, the fan, the
+// inhabitant's view's table, the grid lines' outlines) is rebuilt every frame.
+TEST(NoAllocation, AnUnevenWorldAllocatesNothingPerFrame) {
+    for (const char* name : {"lens", "hills"}) {
+        EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1, name), 0) << name;
+        world::Scene scene;
+        ASSERT_TRUE(world::builtin_scene(name, {}, scene));
+        for (bool chart : {true, false}) {
+            uneven::World w(scene);
+            uneven::Drawing d;
+            d.prepare(w);
+            std::vector<uint8_t> px(320 * 240 * 2);
+            const render::Canvas c(px.data(), 320, 240, 320 * 2, render::PixelFormat::rgb565());
+            render::DrawOptions o;
+            o.projection = chart ? geo::Projection::stereographic : geo::Projection::azimuthal_equidistant;
+            w.press(world::Action::strength_up), w.press(world::Action::curvature_down), w.press(world::Action::thrust);
+            for (int i = 0; i < 3; ++i) w.step(1.0 / 60), d.draw(c, w, o, true);  // warm up
+            g_allocations = 0;
+            g_counting = true;
+            for (int i = 0; i < 40; ++i) w.step(1.0 / 60), d.draw(c, w, o, i % 2 == 0);
+            g_counting = false;
+            EXPECT_EQ(g_allocations.load(), 0) << name << (chart ? " chart" : " inhabitant's view");
+        }
+    }
 }
 
 }  // namespace

@@ -1,0 +1,200 @@
+// The uneven world (see world.hpp).
+#include "uneven/world.hpp"
+
+#include <cmath>
+
+#include "world/ranges.hpp"
+
+namespace noneuclid::uneven {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846, kDegree = kPi / 180;
+
+double wrap(double a) { return geo::wrap_pi(a); }
+double clamp(double v, double lo, double hi) { return v < lo ? lo : (v > hi ? hi : v); }
+
+}  // namespace
+
+World::World(const world::Scene& scene) : scene_(scene) {
+    K = scene_.curvature;
+    R = scene_.limit_radius;
+    gain_most_ = world::bump_gain_most(scene_);
+    build_metric();
+    for (const world::SceneBody& sb : scene_.bodies) {
+        Body b;
+        b.desc = &sb;
+        b.g.x = chart({sb.r, wrap(sb.theta_deg * kDegree)});
+        b.g.phi = wrap(sb.direction_deg * kDegree);
+        b.speed = sb.speed;
+        b.facing = wrap(sb.facing_deg * kDegree);
+        b.spin = sb.spin_deg * kDegree;
+        b.accel = sb.accel;
+        b.accel_dir = wrap(sb.accel_direction_deg * kDegree);
+        for (const world::SceneBody::Vertex& v : sb.vertices) b.local.push_back({v.rho, v.phi_deg * kDegree});
+        settle(b);
+        b.wrapped = false;
+        bodies.push_back(b);
+    }
+    initial_ = bodies;
+    initial_K_ = K;
+}
+
+World& World::operator=(const World& o) {
+    if (this == &o) return *this;
+    scene_ = o.scene_;
+    K = o.K, R = o.R, time = o.time, frame = o.frame;
+    bodies = o.bodies, initial_ = o.initial_, initial_K_ = o.initial_K_;
+    metric_ = o.metric_, gain_ = o.gain_, gain_most_ = o.gain_most_, version_ = o.version_, sweep_dir_ = o.sweep_dir_;
+    for (int i = 0; i < world::kActionCount; ++i) held_[i] = o.held_[i];
+    for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
+    return *this;
+}
+
+double World::limit() const {
+    return geo::shown_radius(K, R, geo::Projection::stereographic);
+}
+
+geo::Polar<double> World::polar(Vec2 x) const {
+    const double rho = std::hypot(x.x, x.y);
+    return {world_radius(K, rho), rho > 0 ? std::atan2(x.y, x.x) : 0.0};
+}
+Vec2 World::chart(geo::Polar<double> p) const {
+    const double rho = chart_radius(K, p.r);
+    return {rho * std::cos(p.theta), rho * std::sin(p.theta)};
+}
+
+Vec2 World::vertex(const Body& b, std::size_t i) const {
+    return exp_map(metric_, b.g.x, b.facing + b.local[i].theta, b.local[i].r).x;
+}
+
+// The metric at K and the gain: each bump where a body at its (r, theta) would be.
+void World::build_metric() {
+    metric_ = Metric{};
+    metric_.K = K;
+    for (const world::SceneBump& sb : scene_.bumps) {
+        if (metric_.bump_count == kMaxBumps) break;  // (the scene file refuses more)
+        Bump& b = metric_.bumps[metric_.bump_count++];
+        b.kind = sb.mass ? BumpKind::mass : BumpKind::hill;
+        b.centre = chart({sb.r, wrap(sb.theta_deg * kDegree)});
+        b.width = sb.width;
+        b.strength = sb.strength * gain_;
+    }
+    ++version_;
+}
+
+// K changed: every body keeps its (r, theta) (folded into the limit circle, which may have
+// shrunk), the bumps theirs.
+void World::set_curvature(double k) {
+    k = clamp(k, -1, 1);
+    if (k == K) return;
+    for (Body& b : bodies) {
+        const geo::Polar<double> p = polar(b.g.x);
+        K = k;
+        b.g.x = chart(p);
+        settle(b);
+        K = metric_.K;
+    }
+    K = k;
+    build_metric();
+}
+
+void World::set_gain(double g) {
+    g = clamp(g, 0, gain_most_);
+    if (g == gain_) return;
+    gain_ = g;
+    build_metric();
+}
+
+void World::press(world::Action a) {
+    using world::Action;
+    held_[static_cast<int>(a)] = true;
+    switch (a) {
+        case Action::next_preset: {
+            const std::vector<double>& p = scene_.presets;
+            if (p.empty()) break;
+            double next = p.front();
+            for (double v : p)
+                if (v > K + 1e-9) {
+                    next = v;
+                    break;
+                }
+            set_curvature(next);
+            break;
+        }
+        case Action::reset: reset(); break;
+        case Action::hyperbolic: set_curvature(-1); break;
+        case Action::flat: set_curvature(0); break;
+        case Action::spherical: set_curvature(1); break;
+        default: break;
+    }
+}
+
+void World::reset() {
+    bodies = initial_;
+    K = initial_K_;
+    gain_ = 1;
+    sweep_dir_ = 1;
+    build_metric();
+}
+
+void World::step(double dt) {
+    using world::Action;
+    const int dk = held(Action::curvature_up) - held(Action::curvature_down);
+    if (dk != 0) set_curvature(K + scene_.curvature_rate * dk * dt);
+    if (scene_.sweep_rate != 0) {
+        double k = K + scene_.sweep_rate * sweep_dir_ * dt;
+        if (k >= 1) k = 1, sweep_dir_ = -1;
+        if (k <= -1) k = -1, sweep_dir_ = 1;
+        set_curvature(k);
+    }
+    const int ds = held(Action::strength_up) - held(Action::strength_down);
+    if (ds != 0) set_gain(gain_ + scene_.strength_rate * ds * dt);
+    const double turn = scene_.turn_rate_deg * kDegree * (held(Action::turn_left) - held(Action::turn_right));
+    for (Body& b : bodies)
+        if (b.active) step_body(b, dt, turn);
+    time += dt;
+    ++frame;
+}
+
+// Steps 1-4 of world.hpp for one body.
+void World::step_body(Body& b, double dt, double turn) const {
+    double a = b.accel, adir = b.accel_dir;
+    const bool ship = b.desc->controlled;
+    if (ship && held(world::Action::thrust)) a = scene_.thrust, adir = b.facing;
+    if (a != 0) {  // velocity += a dt in the tangent plane (the chart's angles are the world's)
+        const double vx = b.speed * std::cos(b.g.phi) + a * dt * std::cos(adir);
+        const double vy = b.speed * std::sin(b.g.phi) + a * dt * std::sin(adir);
+        b.speed = std::hypot(vx, vy);
+        if (b.speed != 0) b.g.phi = std::atan2(vy, vx);
+        if (b.speed > world::Ranges::kSpeed) b.speed = world::Ranges::kSpeed;
+    }
+    if (b.speed != 0) {
+        const double before = b.g.phi;
+        b.g = uneven::step(metric_, b.g, b.speed, dt);
+        const double turned = b.g.phi - before;  // parallel transport keeps angles to the heading
+        b.g.phi = wrap(b.g.phi);
+        b.facing = wrap(b.facing + turned);
+        b.accel_dir = wrap(b.accel_dir + turned);
+    }
+    const double spin = ship ? b.spin + turn : b.spin;
+    if (spin != 0) b.facing = wrap(b.facing + spin * dt);
+    settle(b);
+}
+
+// The limit circle: a centre past it comes back at (2L - r, theta + pi), its headings unchanged
+// (K may have grown so far that it takes more than one fold).
+void World::settle(Body& b) const {
+    const double L = limit();
+    geo::Polar<double> p = polar(b.g.x);
+    b.wrapped = p.r > L;
+    if (!b.wrapped) return;
+    for (int i = 0; i < 8 && p.r > L; ++i) {
+        p.r = 2 * L - p.r;
+        p.theta = wrap(p.theta + kPi);
+        if (p.r < 0) p.r = -p.r, p.theta = wrap(p.theta + kPi);
+    }
+    if (p.r > L) p.r = L;
+    b.g.x = chart(p);
+}
+
+}  // namespace noneuclid::uneven

@@ -1,0 +1,119 @@
+// The uneven world (docs/uneven.md): a scene's bodies on the geodesics of the metric its bumps
+// make (uneven/metric.hpp), driven by the same actions as the world of constant K
+// (world/world.hpp), so that a session (app/session.cpp) runs either.
+//
+// State. A body is its chart point and its heading in the chart (uneven/geodesic.hpp), its
+// world speed, its facing (a chart angle: the chart is conformal, so its angles are the
+// world's) and its spin. Positions are written as the world of constant K writes them: the
+// point (r, theta) is the chart point rho_K(r) (cos theta, sin theta), and a heading is the same
+// angle in both (the frame carried from O along a straight line of the chart is the chart's).
+// With no bumps, a body here follows the constant-K world's body exactly (tests/uneven).
+//
+// One step of dt, for every body: velocity += a dt in the tangent plane (the ship's thrust along
+// its facing, or the body's own acceleration); the geodesic walked for speed * dt by RK4
+// (uneven::step); facing and the acceleration's direction turned with the heading (parallel
+// transport keeps their angle to it); spin turns the facing; past the limit circle a body
+// comes back at (2R - r, theta + pi), as in the world of constant K.
+//
+// The limit circle. On the sphere the chart's point at the antipode is at infinity, so the uneven
+// world's limit circle is R or, at K > 0, the stereographic view's cut at 120 degrees
+// (geo::shown_radius), whichever is nearer: the disc both views show (limit()).
+//
+// Controls: curvature up and down (and the presets, the sweep, keys 1, 2, 3) change K, every body
+// keeping its (r, theta); strength up and down scale every bump's strength by a gain from 0 to
+// its most (gain_most()); reset restores the scene. There is no game and no instrument here yet:
+// fire and the instrument key do nothing. Same actions, same result, bit for bit.
+//
+// Memory: the bodies are allocated when the world is built; step() allocates nothing.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/geometry.hpp"
+#include "uneven/geodesic.hpp"
+#include "world/game.hpp"
+#include "world/instruments.hpp"
+#include "world/scene.hpp"
+#include "world/world.hpp"
+
+namespace noneuclid::uneven {
+
+struct Body {
+    Geodesic g;                  // chart point, heading (the direction of travel)
+    double speed = 0, facing = 0, spin = 0, accel = 0, accel_dir = 0;  // angles in the chart, radians
+    std::vector<geo::Polar<double>> local;  // (rho, phi from the facing)
+    const world::SceneBody* desc = nullptr;
+    bool active = true, hidden = false, wrapped = false;
+    // What app/session.cpp and render/body_points.hpp read of any body.
+    bool closed() const { return desc->closed; }
+    int tessellation() const { return desc->tessellation; }
+};
+
+class World {
+public:
+    using scalar = double;
+    static constexpr bool kUneven = true;
+
+    explicit World(const world::Scene& scene);
+    World(const World& o) : scene_(o.scene_) { *this = o; }
+    World& operator=(const World& o);
+
+    double K = 0, R = 0;  // R: the scene's limit radius (limit() is the one in force)
+    double time = 0;
+    long frame = 0;
+    std::vector<Body> bodies;
+
+    const world::Scene& scene() const { return scene_; }
+    const Metric& metric() const { return metric_; }
+    // Counts the changes of the metric (K, the gain, a reset): views cache what depends on it.
+    uint32_t metric_version() const { return version_; }
+    double gain() const { return gain_; }
+    double gain_most() const { return gain_most_; }
+    // The limit circle in force: R, or at K > 0 the chart's cut if nearer (see above).
+    double limit() const;
+
+    bool held(world::Action a) const { return held_[static_cast<int>(a)]; }
+    void press(world::Action a);
+    void release(world::Action a) { held_[static_cast<int>(a)] = false; }
+    void step(double dt);
+    void reset();
+
+    // The constant-K polar coordinates of a chart point, and back (at the world's K).
+    geo::Polar<double> polar(Vec2 x) const;
+    Vec2 chart(geo::Polar<double> p) const;
+    // A body's vertex i, as the exponential map from its centre (with the integrator's step).
+    Vec2 vertex(const Body& b, std::size_t i) const;
+
+    // What a session asks of every world: no game, no instruments and no zoom here.
+    const world::Game<double>& game() const { return game_; }
+    const std::vector<world::Gauge<double>>& gauges() const { return gauges_; }
+    bool measuring() const { return false; }
+    void place_mark(geo::Polar<double>) {}
+    struct ZoomReading {
+        bool on = false;
+        double z = 1;
+        bool least = false, most = false;
+    };
+    ZoomReading zoom() const { return {}; }
+
+private:
+    void set_curvature(double k);
+    void set_gain(double g);
+    void build_metric();
+    void settle(Body& b) const;
+    void step_body(Body& b, double dt, double turn) const;
+
+    world::Scene scene_;
+    Metric metric_;
+    double gain_ = 1, gain_most_ = 2;
+    uint32_t version_ = 0;
+    int sweep_dir_ = 1;
+    bool held_[world::kActionCount] = {};
+    std::vector<Body> initial_;
+    double initial_K_ = 0;
+    world::Game<double> game_;
+    std::vector<world::Gauge<double>> gauges_;
+};
+
+}  // namespace noneuclid::uneven
