@@ -299,7 +299,7 @@ private:
         v.game = g.on();
         if (v.game) {
             v.ready = g.phase == world::GamePhase::ready;
-            if constexpr (!kUneven<W>) v.target = g.aim(world_, v.aim, v.distance);
+            v.target = g.aim(world_, v.aim, v.distance);
             v.range = world_.scene().game.bullet_range;
         }
         return v;

@@ -185,11 +185,12 @@ void Drawing::body_outline(const World& w, std::size_t i, const geo::ScreenMap<d
     const Body& b = w.bodies[i];
     BodyCache& bc = bodies_[i];
     render::ClipSink sink(m, bc.points.data());
+    const Vec2 from = w.chart(b.centre);
     ray_.clear();
     bool first = true;
     geo::Spot prev;
     auto emit = [&](geo::Polar<double> lp) {
-        const Vec2 x = trace(w.metric(), b.g.x, b.facing + lp.theta, lp.r);
+        const Vec2 x = trace(w.metric(), from, b.facing + lp.theta, lp.r);
         const geo::Spot s = geo::spot_at(m, geo::to_sub(m.cx + m.scale * x.x, m.cy - m.scale * x.y));
         if (first) sink.start(s), first = false;
         else sink.chord(prev, s);

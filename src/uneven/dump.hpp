@@ -1,5 +1,5 @@
-// `noneuclid dump` of an uneven world (files/dump.hpp's line, for uneven/world.hpp): after "K",
-// "gain" (the strength keys' factor) and "bumps", each with its kind, "center" ([r, theta] as
+// `noneuclid dump` of an uneven world (files/dump.hpp's line, for uneven/world.hpp): after "K"
+// (and a game's fields, as there), "gain" (the strength keys' factor) and "bumps", each with its kind, "center" ([r, theta] as
 // the scene gives it), "chart" ([x, y]), "width" and "strength" (the scene's times the gain);
 // each body with "center" ([r, theta] of the world of constant K at the world's K), "chart"
 // ([x, y], the state the integrator carries), "heading" (its direction of travel as a chart
@@ -27,6 +27,7 @@ inline void dump_frame(const uneven::World& world, const DumpOptions&, std::stri
     num(out, world.time);
     out += ",\"K\":";
     num(out, world.K);
+    detail::game_fields(world.game(), out);
     out += ",\"gain\":";
     num(out, world.gain());
     out += ",\"bumps\":[";
@@ -48,27 +49,34 @@ inline void dump_frame(const uneven::World& world, const DumpOptions&, std::stri
     }
     out += "],\"bodies\":[";
     bool first = true;
-    for (const uneven::Body& b : world.bodies) {
+    for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
+        const uneven::Body& b = world.bodies[bi];
         if (!b.active) continue;
         out += first ? "{\"name\":\"" : ",{\"name\":\"";
         first = false;
-        for (char c : b.desc->name) {
-            if (c == '"' || c == '\\') out += '\\';
-            if (static_cast<unsigned char>(c) >= 0x20) out += c;
+        if (b.serial != 0) {
+            detail::serial_name(out, b.desc->kind(), b.serial);
+        } else {
+            for (char c : b.desc->name) {
+                if (c == '"' || c == '\\') out += '\\';
+                if (static_cast<unsigned char>(c) >= 0x20) out += c;
+            }
         }
         out += "\",\"kind\":\"";
         out += world::kind_name(b.desc->kind());
-        out += "\",\"center\":";
-        const geo::Polar<double> c = world.polar(b.g.x);
-        detail::polar(out, c.r, c.theta);
+        out += '"';
+        if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
+        out += ",\"center\":";
+        detail::polar(out, b.centre.r, b.centre.theta);
+        const uneven::Vec2 x = world.chart(b.centre);
         out += ",\"chart\":";
-        pair(b.g.x.x, b.g.x.y);
+        pair(x.x, x.y);
         out += ",\"heading\":";
-        num(out, detail::degrees(b.g.phi));
+        num(out, detail::degrees(b.travel));
         out += ",\"facing\":";
         num(out, detail::degrees(b.facing));
         out += ",\"travel\":";
-        pair(b.speed, detail::degrees(b.g.phi));
+        pair(b.speed, detail::degrees(b.travel));
         out += ",\"vertices\":[";
         for (std::size_t i = 0; i < b.local.size(); ++i) {
             const geo::Polar<double> v = world.polar(world.vertex(b, i));

@@ -22,21 +22,22 @@ World::World(const world::Scene& scene) : scene_(scene) {
     build_metric();
     for (const world::SceneBody& sb : scene_.bodies) {
         Body b;
-        b.desc = &sb;
-        b.g.x = chart({sb.r, wrap(sb.theta_deg * kDegree)});
-        b.g.phi = wrap(sb.direction_deg * kDegree);
-        b.speed = sb.speed;
+        b.centre = {sb.r, wrap(sb.theta_deg * kDegree)};
         b.facing = wrap(sb.facing_deg * kDegree);
-        b.spin = sb.spin_deg * kDegree;
+        b.speed = sb.speed;
+        b.travel = wrap(sb.direction_deg * kDegree);
         b.accel = sb.accel;
         b.accel_dir = wrap(sb.accel_direction_deg * kDegree);
+        b.spin = sb.spin_deg * kDegree;
         for (const world::SceneBody::Vertex& v : sb.vertices) b.local.push_back({v.rho, v.phi_deg * kDegree});
-        settle(b);
-        b.wrapped = false;
         bodies.push_back(b);
     }
+    for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
+    fold();
+    game_.setup(*this);
     initial_ = bodies;
     initial_K_ = K;
+    initial_game_ = game_;
 }
 
 World& World::operator=(const World& o) {
@@ -45,6 +46,8 @@ World& World::operator=(const World& o) {
     K = o.K, R = o.R, time = o.time, frame = o.frame;
     bodies = o.bodies, initial_ = o.initial_, initial_K_ = o.initial_K_;
     metric_ = o.metric_, gain_ = o.gain_, gain_most_ = o.gain_most_, version_ = o.version_, sweep_dir_ = o.sweep_dir_;
+    game_ = o.game_, initial_game_ = o.initial_game_;
+    game_.rebind(scene_.game), initial_game_.rebind(scene_.game);
     for (int i = 0; i < world::kActionCount; ++i) held_[i] = o.held_[i];
     for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
     return *this;
@@ -64,7 +67,7 @@ Vec2 World::chart(geo::Polar<double> p) const {
 }
 
 Vec2 World::vertex(const Body& b, std::size_t i) const {
-    return exp_map(metric_, b.g.x, b.facing + b.local[i].theta, b.local[i].r).x;
+    return exp_map(metric_, chart(b.centre), b.facing + b.local[i].theta, b.local[i].r).x;
 }
 
 // The metric at K and the gain: each bump where a body at its (r, theta) would be.
@@ -82,19 +85,21 @@ void World::build_metric() {
     ++version_;
 }
 
-// K changed: every body keeps its (r, theta) (folded into the limit circle, which may have
+// Every body inside the limit circle in force (after K changed it).
+void World::fold() {
+    for (Body& b : bodies) {
+        settle(b);
+        b.wrapped = false;
+    }
+}
+
+// K changed: every body keeps its (r, theta), folded into the limit circle (which may have
 // shrunk), the bumps theirs.
 void World::set_curvature(double k) {
     k = clamp(k, -1, 1);
     if (k == K) return;
-    for (Body& b : bodies) {
-        const geo::Polar<double> p = polar(b.g.x);
-        K = k;
-        b.g.x = chart(p);
-        settle(b);
-        K = metric_.K;
-    }
     K = k;
+    fold();
     build_metric();
 }
 
@@ -125,6 +130,7 @@ void World::press(world::Action a) {
         case Action::hyperbolic: set_curvature(-1); break;
         case Action::flat: set_curvature(0); break;
         case Action::spherical: set_curvature(1); break;
+        case Action::fire: game_.press_fire(); break;
         default: break;
     }
 }
@@ -132,6 +138,7 @@ void World::press(world::Action a) {
 void World::reset() {
     bodies = initial_;
     K = initial_K_;
+    game_ = initial_game_;
     gain_ = 1;
     sweep_dir_ = 1;
     build_metric();
@@ -154,6 +161,13 @@ void World::step(double dt) {
         if (b.active) step_body(b, dt, turn);
     time += dt;
     ++frame;
+    const double k = K;
+    game_.step(*this, dt, held(Action::fire));
+    if (K != k) {  // a game's new level sets K
+        const double set = K;
+        K = k;
+        set_curvature(set);
+    }
 }
 
 // Steps 1-4 of world.hpp for one body.
@@ -162,17 +176,18 @@ void World::step_body(Body& b, double dt, double turn) const {
     const bool ship = b.desc->controlled;
     if (ship && held(world::Action::thrust)) a = scene_.thrust, adir = b.facing;
     if (a != 0) {  // velocity += a dt in the tangent plane (the chart's angles are the world's)
-        const double vx = b.speed * std::cos(b.g.phi) + a * dt * std::cos(adir);
-        const double vy = b.speed * std::sin(b.g.phi) + a * dt * std::sin(adir);
+        const double vx = b.speed * std::cos(b.travel) + a * dt * std::cos(adir);
+        const double vy = b.speed * std::sin(b.travel) + a * dt * std::sin(adir);
         b.speed = std::hypot(vx, vy);
-        if (b.speed != 0) b.g.phi = std::atan2(vy, vx);
+        if (b.speed != 0) b.travel = std::atan2(vy, vx);
         if (b.speed > world::Ranges::kSpeed) b.speed = world::Ranges::kSpeed;
+        if (ship && b.speed > game_.top_speed(world::Ranges::kSpeed)) b.speed = game_.top_speed(world::Ranges::kSpeed);
     }
     if (b.speed != 0) {
-        const double before = b.g.phi;
-        b.g = uneven::step(metric_, b.g, b.speed, dt);
-        const double turned = b.g.phi - before;  // parallel transport keeps angles to the heading
-        b.g.phi = wrap(b.g.phi);
+        const Geodesic g = uneven::step(metric_, Geodesic{chart(b.centre), b.travel}, b.speed, dt);
+        const double turned = g.phi - b.travel;  // parallel transport keeps angles to the heading
+        b.centre = polar(g.x);
+        b.travel = wrap(g.phi);
         b.facing = wrap(b.facing + turned);
         b.accel_dir = wrap(b.accel_dir + turned);
     }
@@ -185,16 +200,14 @@ void World::step_body(Body& b, double dt, double turn) const {
 // (K may have grown so far that it takes more than one fold).
 void World::settle(Body& b) const {
     const double L = limit();
-    geo::Polar<double> p = polar(b.g.x);
+    geo::Polar<double>& p = b.centre;
     b.wrapped = p.r > L;
-    if (!b.wrapped) return;
     for (int i = 0; i < 8 && p.r > L; ++i) {
         p.r = 2 * L - p.r;
         p.theta = wrap(p.theta + kPi);
         if (p.r < 0) p.r = -p.r, p.theta = wrap(p.theta + kPi);
     }
     if (p.r > L) p.r = L;
-    b.g.x = chart(p);
 }
 
 }  // namespace noneuclid::uneven

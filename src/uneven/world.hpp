@@ -2,16 +2,16 @@
 // make (uneven/metric.hpp), driven by the same actions as the world of constant K
 // (world/world.hpp), so that a session (app/session.cpp) runs either.
 //
-// State. A body is its chart point and its heading in the chart (uneven/geodesic.hpp), its
-// world speed, its facing (a chart angle: the chart is conformal, so its angles are the
-// world's) and its spin. Positions are written as the world of constant K writes them: the
-// point (r, theta) is the chart point rho_K(r) (cos theta, sin theta), and a heading is the same
-// angle in both (the frame carried from O along a straight line of the chart is the chart's).
-// With no bumps, a body here follows the constant-K world's body exactly (tests/uneven).
+// State. A body is the constant-K world's (world::Body<double>), read through the chart: its
+// centre (r, theta) is the chart point rho_K(r) (cos theta, sin theta), and its angles (travel,
+// facing, the acceleration's direction) are the same in both (the chart is conformal, and the
+// frame carried from O along a straight line of the chart is the chart's own). So the game
+// (world/game.hpp) runs here as it is, its collisions in the world of constant K about each
+// body, and with no bumps a body here follows the constant-K world's exactly (tests/uneven).
 //
 // One step of dt, for every body: velocity += a dt in the tangent plane (the ship's thrust along
-// its facing, or the body's own acceleration); the geodesic walked for speed * dt by RK4
-// (uneven::step); facing and the acceleration's direction turned with the heading (parallel
+// its facing, or the body's own acceleration); the geodesic from its chart point and heading
+// walked for speed * dt by RK4 (uneven::step); facing and the acceleration's direction turned with the heading (parallel
 // transport keeps their angle to it); spin turns the facing; past the limit circle a body
 // comes back at (2R - r, theta + pi), as in the world of constant K.
 //
@@ -20,9 +20,10 @@
 // (geo::shown_radius), whichever is nearer: the disc both views show (limit()).
 //
 // Controls: curvature up and down (and the presets, the sweep, keys 1, 2, 3) change K, every body
-// keeping its (r, theta); strength up and down scale every bump's strength by a gain from 0 to
-// its most (gain_most()); reset restores the scene. There is no game and no instrument here yet:
-// fire and the instrument key do nothing. Same actions, same result, bit for bit.
+// keeping its (r, theta) (a game's level may set K too); strength up and down scale every bump's
+// strength by a gain from 0 to its most (gain_most()); reset restores the scene; fire plays the
+// game, if the scene has one. There are no instruments here yet: the instrument key does
+// nothing. Same actions, same result, bit for bit.
 //
 // Memory: the bodies are allocated when the world is built; step() allocates nothing.
 #pragma once
@@ -32,6 +33,7 @@
 
 #include "geometry/geometry.hpp"
 #include "uneven/geodesic.hpp"
+#include "world/body.hpp"
 #include "world/game.hpp"
 #include "world/instruments.hpp"
 #include "world/scene.hpp"
@@ -39,16 +41,7 @@
 
 namespace noneuclid::uneven {
 
-struct Body {
-    Geodesic g;                  // chart point, heading (the direction of travel)
-    double speed = 0, facing = 0, spin = 0, accel = 0, accel_dir = 0;  // angles in the chart, radians
-    std::vector<geo::Polar<double>> local;  // (rho, phi from the facing)
-    const world::SceneBody* desc = nullptr;
-    bool active = true, hidden = false, wrapped = false;
-    // What app/session.cpp and render/body_points.hpp read of any body.
-    bool closed() const { return desc->closed; }
-    int tessellation() const { return desc->tessellation; }
-};
+using Body = world::Body<double>;
 
 class World {
 public:
@@ -85,8 +78,9 @@ public:
     // A body's vertex i, as the exponential map from its centre (with the integrator's step).
     Vec2 vertex(const Body& b, std::size_t i) const;
 
-    // What a session asks of every world: no game, no instruments and no zoom here.
+    // The game, if the scene has one (world/game.hpp).
     const world::Game<double>& game() const { return game_; }
+    // What a session asks of every world: no instruments and no zoom here.
     const std::vector<world::Gauge<double>>& gauges() const { return gauges_; }
     bool measuring() const { return false; }
     void place_mark(geo::Polar<double>) {}
@@ -101,6 +95,7 @@ private:
     void set_curvature(double k);
     void set_gain(double g);
     void build_metric();
+    void fold();
     void settle(Body& b) const;
     void step_body(Body& b, double dt, double turn) const;
 
@@ -112,7 +107,7 @@ private:
     bool held_[world::kActionCount] = {};
     std::vector<Body> initial_;
     double initial_K_ = 0;
-    world::Game<double> game_;
+    world::Game<double> game_, initial_game_;
     std::vector<world::Gauge<double>> gauges_;
 };
 

@@ -87,10 +87,6 @@ bool bump_within_ranges(const SceneBump& b, int index, const Scene& scene, std::
 }
 
 bool uneven_scene_fits(const Scene& scene, std::string& why) {
-    if (scene.game.on) {
-        why = "a scene with bumps cannot have a game yet: remove the [game] table or the bumps";
-        return false;
-    }
     if (!scene.measures.empty()) {
         why = "a scene with bumps cannot have instruments yet: remove the [[measure]] tables or the bumps";
         return false;

@@ -317,6 +317,13 @@ void hills(Scene& s) {
     s.bodies.push_back(place(polygon("triangle", 3, 0.2, 90, {64, 220, 120}), 1.8, 140, 0, 0.12, 230, -15));
 }
 
+// The game around a mass: its asteroids and bullets curve round it (the asteroids' levels and K
+// as the asteroids scene's).
+void gravity(Scene& s) {
+    asteroids(s);
+    s.bumps.push_back({true, 1.5, 20, 0.25, 0.3});
+}
+
 struct SceneRow {
     const char* name;
     const char* about;
@@ -345,6 +352,8 @@ const SceneRow kScenes[] = {
      [](Scene& s, const SceneParams&) { lens(s); }},
     {"hills", "uneven: hills and a dip that the grid's geodesics bend through (P: the chart or the inhabitant's view; < > their strength)",
      [](Scene& s, const SceneParams&) { hills(s); }},
+    {"gravity", "uneven: the game around a mass that bends the asteroids' and the bullets' paths",
+     [](Scene& s, const SceneParams&) { gravity(s); }},
     {"stress", "many bodies of many vertices (--bodies, --vertices, --tessellation)", [](Scene& s, const SceneParams& p) { stress(s, p); }},
 };
 

@@ -71,9 +71,9 @@ TEST(UnevenWorld, WithoutBumpsItIsTheConstantKWorld) {
             for (std::size_t i = 0; i < u.bodies.size(); ++i) wraps += c.bodies[i].wrapped;
         }
         for (std::size_t i = 0; i < u.bodies.size(); ++i) {  // (the world of constant K adds its instruments' after)
-            const geo::Polar<double> p = c.bodies[i].centre, q = u.polar(u.bodies[i].g.x);
+            const geo::Polar<double> p = c.bodies[i].centre, q = u.bodies[i].centre;
             worst = std::fmax(worst, std::fabs(p.r - q.r) + p.r * std::fabs(std::remainder(p.theta - q.theta, 2 * kPi)));
-            worst_angle = std::fmax(worst_angle, std::fabs(std::remainder(c.bodies[i].travel - u.bodies[i].g.phi, 2 * kPi)));
+            worst_angle = std::fmax(worst_angle, std::fabs(std::remainder(c.bodies[i].travel - u.bodies[i].travel, 2 * kPi)));
             worst_angle = std::fmax(worst_angle, std::fabs(std::remainder(c.bodies[i].facing - u.bodies[i].facing, 2 * kPi)));
             EXPECT_NEAR(c.bodies[i].speed, u.bodies[i].speed, 1e-12) << K;
         }
@@ -148,12 +148,14 @@ TEST(UnevenWorld, TheDumpsChartPointsAgreeWithAnotherIntegrator) {
         for (std::size_t i = 0; i < w.bodies.size(); ++i) {
             const uneven::Body& b0 = start.bodies[i];
             if (b0.speed == 0 || w.bodies[i].wrapped || b0.desc->grid) continue;
-            long double x = b0.g.x.x, y = b0.g.x.y, gx, gy, psi;
+            const Vec2 x0 = start.chart(b0.centre);
+            long double x = x0.x, y = x0.y, gx, gy, psi;
             m.grad(x, y, gx, gy, psi);
-            long double vx = b0.speed * std::exp(-psi) * std::cos((long double)b0.g.phi);
-            long double vy = b0.speed * std::exp(-psi) * std::sin((long double)b0.g.phi);
+            long double vx = b0.speed * std::exp(-psi) * std::cos((long double)b0.travel);
+            long double vy = b0.speed * std::exp(-psi) * std::sin((long double)b0.travel);
             second_order(m, x, y, vx, vy, 10.0L);
-            worst = std::fmax(worst, std::hypot(double(x) - w.bodies[i].g.x.x, double(y) - w.bodies[i].g.x.y));
+            const Vec2 x1 = w.chart(w.bodies[i].centre);
+            worst = std::fmax(worst, std::hypot(double(x) - x1.x, double(y) - x1.y));
             ++checked;
         }
         std::printf("%s: %d bodies after 600 steps within %.2e chart units of the second-order integrator\n", name,
@@ -166,8 +168,9 @@ TEST(UnevenWorld, TheDumpsChartPointsAgreeWithAnotherIntegrator) {
         files::dump_frame(w, o, line);
         const uneven::Body& b = w.bodies.back();
         char want[96];
-        std::snprintf(want, sizeof want, "\"chart\":[%.9g,%.9g],\"heading\":%.9g", b.g.x.x, b.g.x.y,
-                      std::remainder(b.g.phi, 2 * kPi) / kDeg);
+        const Vec2 x = w.chart(b.centre);
+        std::snprintf(want, sizeof want, "\"chart\":[%.9g,%.9g],\"heading\":%.9g", x.x, x.y,
+                      std::remainder(b.travel, 2 * kPi) / kDeg);
         EXPECT_NE(line.find(want), std::string::npos) << want << "\n" << line.substr(0, 400);
     }
 }
@@ -183,7 +186,7 @@ TEST(UnevenWorld, TheSpeedHoldsForAMillionSteps) {
     const double speed = w.bodies[0].speed;
     for (int i = 0; i < 1000000; ++i) w.step(1.0 / 60);
     EXPECT_EQ(w.bodies[0].speed, speed);
-    uneven::Geodesic g = w.bodies[0].g;
+    uneven::Geodesic g{w.chart(w.bodies[0].centre), w.bodies[0].travel};
     double length = 0;
     const int n = 256;
     for (int i = 0; i < n; ++i) {
@@ -194,6 +197,47 @@ TEST(UnevenWorld, TheSpeedHoldsForAMillionSteps) {
     }
     std::printf("after 10^6 steps: speed %.12f, measured over the next step %.12f\n", speed, length * 60);
     EXPECT_NEAR(length * 60, speed, 1e-9);
+}
+
+// The gravity scene's game: a bullet fired past the mass bends towards it (with the mass at
+// strength 0, it flies straight: its heading stays within 1e-12), and the game's rules run as in
+// the world of constant K (the shot is a hit or flies its range).
+TEST(UnevenWorld, TheGamesBulletsCurveRoundTheMass) {
+    for (bool mass : {true, false}) {
+        world::Scene s;
+        ASSERT_TRUE(world::builtin_scene("gravity", {}, s));
+        if (!mass) s.bumps[0].strength = 0;
+        uneven::World w(s);
+        w.press(world::Action::fire), w.release(world::Action::fire);
+        w.step(1.0 / 60);
+        ASSERT_EQ(w.game().phase, world::GamePhase::playing);
+        w.press(world::Action::turn_right);  // from facing up (90) to 10 degrees, 0.3 from the mass
+        for (int i = 0; i < 40; ++i) w.step(1.0 / 60);
+        w.release(world::Action::turn_right);
+        w.press(world::Action::fire);
+        w.step(1.0 / 60);
+        w.release(world::Action::fire);
+        const uneven::Body* bullet = nullptr;
+        for (const uneven::Body& b : w.bodies)
+            if (b.active && b.desc->kind() == world::BodyKind::bullet) bullet = &b;
+        ASSERT_NE(bullet, nullptr);
+        const double first = bullet->travel;
+        const Vec2 start = w.chart(bullet->centre);
+        double turned = 0;
+        for (int i = 0; i < 50 && bullet->active; ++i) {
+            w.step(1.0 / 60);
+            turned = std::remainder(bullet->travel - first, 2 * kPi);
+        }
+        const Vec2 c = w.metric().bumps[0].centre, now = w.chart(bullet->centre);
+        std::printf("%s: the bullet from heading %.1f deg turned %.3f deg in its flight\n", mass ? "the mass" : "no mass",
+                    first / kDeg, turned / kDeg);
+        if (mass) {
+            EXPECT_GT(turned, 5 * kDeg);  // the mass is to its left (counter-clockwise): it turns left
+            EXPECT_GT(uneven::cross(now - start, c - start), 0);
+        } else {
+            EXPECT_LT(std::fabs(turned), 1e-12);
+        }
+    }
 }
 
 }  // namespace uneven_world_test
