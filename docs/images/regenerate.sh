@@ -23,6 +23,10 @@
 # earth-tissot.png  the same with Tissot's circles (--tissot) about 45 N 10 E
 # game-earth.png  attract mode playing the game over the Earth (tests/files/data/earth_game.toml)
 #                for 10 s, 800x480 (docs/game.md)
+# uneven-lens.png  the lens scene in its chart and in the inhabitant's view, 400x400 each
+#                (docs/uneven.md); uneven-hills.png the hills scene's chart at K = -0.6 and 0,
+#                and its inhabitant's view at 0; uneven-gravity.png the game around a mass
+#                (game.actions), chart view, 800x480
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -133,3 +137,14 @@ done
 python3 "$tmp/join.py" "${panels[@]}" docs/images/earth-tissot.png
 "$nc" run --display png --scene tests/files/data/earth_game.toml --attract 0.5 --frames 600 --aa --scores none \
     --size 800x480 --screenshot docs/images/game-earth.png
+# Uneven worlds (docs/uneven.md).
+for p in stereographic equidistant; do
+    "$nc" render --scene lens --frames 60 --aa --size 400x400 --projection "$p" --out "$tmp/lens-$p.png"
+done
+python3 "$tmp/join.py" "$tmp/lens-stereographic.png" "$tmp/lens-equidistant.png" docs/images/uneven-lens.png
+"$nc" render --scene hills --frames 60 --aa --size 400x400 --projection stereographic --curvature -0.6 --out "$tmp/h1.png"
+"$nc" render --scene hills --frames 60 --aa --size 400x400 --projection stereographic --out "$tmp/h2.png"
+"$nc" render --scene hills --frames 60 --aa --size 400x400 --out "$tmp/h3.png"
+python3 "$tmp/join.py" "$tmp/h1.png" "$tmp/h2.png" "$tmp/h3.png" docs/images/uneven-hills.png
+sed 's/^scene .*/scene gravity/' docs/images/game.actions > "$tmp/gravity.actions"
+"$nc" render --actions "$tmp/gravity.actions" --frames 570 --projection stereographic --out docs/images/uneven-gravity.png

@@ -70,6 +70,16 @@ Vec2 World::vertex(const Body& b, std::size_t i) const {
     return exp_map(metric_, chart(b.centre), b.facing + b.local[i].theta, b.local[i].r).x;
 }
 
+void World::shape_vectors(const Body& b, geo::Vec3<double>& c, geo::Vec3<double>* out, std::size_t n) const {
+    c = geo::to_vec(K, b.centre);
+    for (std::size_t i = 0; i < n; ++i) out[i] = geo::to_vec(K, polar(vertex(b, i)));
+}
+double World::model_length(const Body& b, double length) const {
+    const Vec2 x = chart(b.centre);
+    const double beta = metric_.at(x).psi + std::log(1 + K * dot(x, x) / 4);  // psi less the constant-K part
+    return length * std::exp(-beta);
+}
+
 // The metric at K and the gain: each bump where a body at its (r, theta) would be.
 void World::build_metric() {
     metric_ = Metric{};

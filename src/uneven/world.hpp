@@ -78,6 +78,12 @@ public:
     // A body's vertex i, as the exponential map from its centre (with the integrator's step).
     Vec2 vertex(const Body& b, std::size_t i) const;
 
+    // For the game's collisions (world/game.hpp): body b's drawn vertices (the exponential map) and
+    // centre as 3-vectors of the constant-K model, and a length about b in the model's units (the
+    // metric's bumps stretch or shrink it there by e^-beta).
+    void shape_vectors(const Body& b, geo::Vec3<double>& c, geo::Vec3<double>* out, std::size_t n) const;
+    double model_length(const Body& b, double length) const;
+
     // The game, if the scene has one (world/game.hpp).
     const world::Game<double>& game() const { return game_; }
     // What a session asks of every world: no instruments and no zoom here.

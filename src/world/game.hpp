@@ -270,12 +270,26 @@ private:
         }
     }
 
-    // The 3-vectors of body b's vertices into out, its centre's into c.
+    // The 3-vectors of body b's vertices into out, its centre's into c: in a world that draws its
+    // bodies otherwise than the constant-K model does (an uneven world, uneven/world.hpp), the
+    // vertices it draws, so that what is hit is what is seen.
     template <class W>
     static std::size_t vectors(const W& w, const Body<T>& b, geo::Vec3<T>& c, geo::Vec3<T>* out) {
         const std::size_t n = b.local.size() < kGameMaxVertices ? b.local.size() : kGameMaxVertices;
-        geo::body_vectors(w.K, b.centre, b.facing, b.local.data(), n, c, out);
+        if constexpr (requires { w.shape_vectors(b, c, out, n); })
+            w.shape_vectors(b, c, out, n);
+        else
+            geo::body_vectors(w.K, b.centre, b.facing, b.local.data(), n, c, out);
         return n;
+    }
+    // A world length about body b as the constant-K model measures it (the broad phase's), the
+    // same in the world of constant K.
+    template <class W>
+    static T model_length(const W& w, const Body<T>& b, T length) {
+        if constexpr (requires { w.model_length(b, length); })
+            return w.model_length(b, length);
+        else
+            return length;
     }
 
     template <class W>
@@ -289,7 +303,9 @@ private:
             const geo::Vec3<T> p = bu.wrapped ? q : geo::to_vec(w.K, u.prev);  // across the rim: no path
             for (Slot& a : asteroids_) {
                 const Body<T>& ab = body(w, a);
-                if (!ab.active || a.born == w.frame || geo::distance(w.K, bu.centre, ab.centre) > a.radius + step) continue;
+                if (!ab.active || a.born == w.frame ||
+                    geo::distance(w.K, bu.centre, ab.centre) > model_length(w, ab, a.radius) + model_length(w, bu, step))
+                    continue;
                 const std::size_t n = vectors(w, ab, centre, verts);
                 if (!geo::segment_meets_star(centre, verts, n, p, q)) continue;
                 bu.active = false;
@@ -309,7 +325,8 @@ private:
         const std::size_t m = vectors(w, sh, sc, sv);
         for (Slot& a : asteroids_) {
             const Body<T>& ab = body(w, a);
-            if (!ab.active || geo::distance(w.K, sh.centre, ab.centre) > a.radius + T(nose_)) continue;
+            if (!ab.active || geo::distance(w.K, sh.centre, ab.centre) > model_length(w, ab, a.radius) + model_length(w, sh, nose_))
+                continue;
             const std::size_t n = vectors(w, ab, ac, av);
             if (!geo::polygons_overlap(ac, av, n, sc, sv, m)) continue;
             emit({GameEvent::crash, 0, ab.serial, 0});

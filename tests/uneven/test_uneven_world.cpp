@@ -240,5 +240,65 @@ TEST(UnevenWorld, TheGamesBulletsCurveRoundTheMass) {
     }
 }
 
+// Whether the chart segment p-q meets the closed polygon v[0..n) (crosses an edge or lies inside).
+bool meets(Vec2 p, Vec2 q, const std::vector<Vec2>& v) {
+    auto side = [](Vec2 a, Vec2 b, Vec2 c) { return uneven::cross(b - a, c - a); };
+    bool inside = false;
+    for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+        const Vec2 a = v[j], b = v[i];
+        if ((side(p, q, a) > 0) != (side(p, q, b) > 0) && (side(a, b, p) > 0) != (side(a, b, q) > 0)) return true;
+        if ((a.y > q.y) != (b.y > q.y) && q.x < (b.x - a.x) * (q.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+    }
+    return inside;
+}
+
+// The gravity scene's game hits what it draws: shots at each asteroid (held still), the frame of
+// the hit against the first frame the bullet's path crosses the asteroid's outline as drawn (the
+// exponential map, in the chart), a different test from the game's.
+TEST(UnevenWorld, TheGameHitsWhatItDraws) {
+    world::Scene s;
+    ASSERT_TRUE(world::builtin_scene("gravity", {}, s));
+    int crossed = 0, agreed = 0;
+    for (int target = 0; target < 4; ++target) {
+        uneven::World w(s);
+        w.press(world::Action::fire), w.release(world::Action::fire);
+        w.step(1.0 / 60);
+        std::vector<uneven::Body*> rocks;
+        uneven::Body* ship = nullptr;
+        for (uneven::Body& b : w.bodies) {
+            if (b.active && b.desc->kind() == world::BodyKind::asteroid) b.speed = 0, b.spin = 0, rocks.push_back(&b);
+            if (b.desc->controlled) ship = &b;
+        }
+        ASSERT_GT(rocks.size(), static_cast<std::size_t>(target));
+        const uneven::Body& rock = *rocks[static_cast<std::size_t>(target)];
+        ship->facing = rock.centre.theta;  // from O, along the chart's radius towards it
+        for (int i = 0; i < 60; ++i) w.step(1.0 / 60);  // (the game's cooldown)
+        w.press(world::Action::fire);
+        w.step(1.0 / 60);
+        w.release(world::Action::fire);
+        const uneven::Body* bullet = nullptr;
+        for (const uneven::Body& b : w.bodies)
+            if (b.active && b.desc->kind() == world::BodyKind::bullet) bullet = &b;
+        ASSERT_NE(bullet, nullptr);
+        const uint32_t serial = rock.serial;
+        long hit = -1, cross = -1;
+        for (long f = 0; f < 200 && hit < 0; ++f) {
+            const Vec2 p = w.chart(bullet->centre);
+            std::vector<Vec2> outline;
+            for (std::size_t i = 0; i < rock.local.size(); ++i) outline.push_back(w.vertex(rock, i));
+            const bool was = bullet->active;
+            w.step(1.0 / 60);
+            if (was && cross < 0 && meets(p, w.chart(bullet->centre), outline)) cross = f;
+            for (int e = 0; e < w.game().event_count(); ++e)
+                if (w.game().events()[e].kind == world::GameEvent::hit && w.game().events()[e].asteroid == serial) hit = f;
+        }
+        std::printf("asteroid %u: its drawn outline crossed in frame %ld, hit in frame %ld\n", serial, cross, hit);
+        crossed += cross >= 0;
+        agreed += cross >= 0 && std::labs(hit - cross) <= 1;
+    }
+    EXPECT_GE(crossed, 2);
+    EXPECT_EQ(agreed, crossed);
+}
+
 }  // namespace uneven_world_test
 }  // namespace
