@@ -41,7 +41,8 @@ install(TARGETS noneuclid_engine ${noneuclid_engine_layers} noneuclid_capi noneu
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT dev)
 if(NONEUCLID_CAPI_SHARED)
     install(TARGETS noneuclid_capi_shared EXPORT noneuclidTargets
-            LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/noneuclid COMPONENT dev)
+            LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/noneuclid COMPONENT dev
+                    PERMISSIONS OWNER_READ OWNER_WRITE GROUP_READ WORLD_READ)  # (a library is not run)
 endif()
 install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/capi/noneuclid.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
         COMPONENT dev)
