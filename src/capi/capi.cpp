@@ -74,12 +74,14 @@ bool find_format(std::string_view name, render::PixelFormat& out) {
 }
 const char* const kFormatList = "xrgb8888, rgb565, rgb888, bgr565, xbgr8888, bgr888 or rgba8888";
 
+using capi::capi_engine;
+
 nw_status parse_engine(const char* function, const char* engine, world::EngineKind& out) {
     out = world::kDefaultEngine;
     if (!engine) return NW_OK;
-    if (world::parse_engine(name_of(engine), out)) return NW_OK;
-    return fail(NW_ERR_NAME, std::string(function) + ": no engine " + world::quote(name_of(engine)) + ": name " +
-                                 world::or_list(world::engine_names()) + ", or pass NULL for fixed.");
+    if (world::parse_engine(name_of(engine), out) && capi_engine(out)) return NW_OK;
+    return fail(NW_ERR_NAME, std::string(function) + ": no engine " + world::quote(name_of(engine)) +
+                                 " in the C interface: name fixed or double, or pass NULL for fixed.");
 }
 
 // The world of a scene already read: checked against the world's budget and ranges, as the

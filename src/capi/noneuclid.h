@@ -68,8 +68,9 @@ NW_API int nw_version_number(void);
 NW_API const char* nw_last_error(void);
 
 /* A world from a TOML scene file's text (docs/file-formats.md, "Scene files"), `length` bytes
- * (it need not end with a NUL). `engine`: "fixed" (the default, also for NULL), "double",
- * "float" or "paper". Textures may name the built-in images only ("builtin:..."). */
+ * (it need not end with a NUL). `engine`: "fixed" (fixed point and lookup tables, the device's;
+ * also for NULL) or "double" (the same forms in double, the reference). Textures may name the
+ * built-in images only ("builtin:..."). */
 NW_API nw_status nw_world_from_text(const char* text, size_t length, const char* engine, nw_world** out);
 /* A world from a built-in scene: kiosk, asteroids, textured, measure, fig1, ..., earth, stress
  * (`noneuclid scenes` lists them). */

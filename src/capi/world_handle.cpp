@@ -108,10 +108,13 @@ private:
 
 }  // namespace
 
+bool capi_engine(world::EngineKind engine) {
+    return engine == world::engine_named("fixed") || engine == world::engine_named("double");
+}
+
 std::unique_ptr<WorldHandle> make_world_handle(world::EngineKind engine, const world::Scene& scene) {
-    return world::with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<WorldHandle> {
-        return std::make_unique<EngineWorld<W>>(scene);
-    });
+    if (engine == world::engine_named("double")) return std::make_unique<EngineWorld<world::World<double>>>(scene);
+    return std::make_unique<EngineWorld<world::World<fx::fixed>>>(scene);
 }
 
 }  // namespace noneuclid::capi

@@ -38,7 +38,11 @@ public:
     virtual nw_event event(int index) const = 0;
 };
 
-// A world of `scene` on `engine` (allocates; may throw std::bad_alloc).
+// The engines the C interface runs: the device's, fixed point, and its reference, double. (The
+// float and paper engines are for comparing numbers, in the program: each engine more is every
+// template of the world and the drawing compiled once more.)
+bool capi_engine(world::EngineKind engine);
+// A world of `scene` on `engine`, one capi_engine accepts (allocates; may throw std::bad_alloc).
 std::unique_ptr<WorldHandle> make_world_handle(world::EngineKind engine, const world::Scene& scene);
 
 }  // namespace noneuclid::capi

@@ -20,7 +20,8 @@ void actions(std::string_view input);  // app::parse_script
 // each steps some frames, and the last frame dumped (files::dump_frame).
 void world(std::string_view input);
 // The C interface (src/capi/noneuclid.h): a scene text, a line "%%", then operations, 4 bytes
-// each, on the world made from it: steps, K, controls, views, drawings of any size, stride,
+// each, on the world made from it (on fixed or double, or a bad engine's name, by the input's
+// length): steps, K, controls, views, drawings of any size, stride,
 // format and buffer (the buffer exactly as large as said: a write past it is ASan's), bodies and
 // events by any index. Every status must be the one the arguments call for, and every failure
 // one plain line in nw_last_error.

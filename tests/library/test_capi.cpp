@@ -135,6 +135,7 @@ TEST(CApi, BadInputIsAStatusAndASentence) {
     EXPECT_NE(std::string(nw_last_error()).find("kiosk"), std::string::npos);  // the names to choose from
     EXPECT_EQ(nw_world_from_name("kiosk", "abacus", &w), NW_ERR_NAME);
     expect_sentence("nw_world_from_name");
+    EXPECT_EQ(nw_world_from_name("kiosk", "paper", &w), NW_ERR_NAME);  // (the program's, not the C interface's)
     EXPECT_EQ(nw_world_from_name(nullptr, nullptr, &w), NW_ERR_NULL);
     EXPECT_EQ(nw_world_from_name("kiosk", nullptr, nullptr), NW_ERR_NULL);
     expect_sentence("nw_world_from_name");
