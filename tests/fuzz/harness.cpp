@@ -387,7 +387,7 @@ void capi(std::string_view input) {
         return;
     }
     if (made != NW_OK) {  // the world's budget and ranges (as the program checks a scene it loads)
-        FUZZ_CHECK(made == NW_ERR_SCENE && !w, std::to_string(made));
+        FUZZ_CHECK(made == NW_ERR_SCENE && !w, std::to_string(made) + " " + nw_last_error());
         check_error();
         return;
     }
