@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -64,7 +63,12 @@ nw_status guarded(const char* function, F&& f) {
     }
 }
 
-std::string_view name_of(const char* s) { return {s, strnlen(s, kNameLimit)}; }
+// The caller's name, read up to its NUL or kNameLimit bytes (strnlen is POSIX's, not C++'s).
+std::string_view name_of(const char* s) {
+    std::size_t n = 0;
+    while (n < kNameLimit && s[n] != '\0') ++n;
+    return {s, n};
+}
 
 bool find_format(std::string_view name, render::PixelFormat& out) {
     using P = render::PixelFormat;
