@@ -127,6 +127,7 @@ TEST(CApi, StrideLeavesThePaddingAlone) {
     }
 }
 
+// One long list on purpose: every function's every refusal, each a line, read top to bottom.
 TEST(CApi, BadInputIsAStatusAndASentence) {
     nw_world* w = reinterpret_cast<nw_world*>(1);
     EXPECT_EQ(nw_world_from_name("no such scene", nullptr, &w), NW_ERR_SCENE);
