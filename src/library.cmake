@@ -48,7 +48,7 @@ install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/capi/noneuclid.h DESTINATION ${CMAKE_I
         COMPONENT dev)
 foreach(layer fixed geometry world files render lang)
     install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/${layer} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/noneuclid
-            COMPONENT dev FILES_MATCHING PATTERN "*.hpp")
+            COMPONENT dev FILES_MATCHING PATTERN "*.hpp" PATTERN "toml_reader.hpp" EXCLUDE)  # (toml++'s, inside)
 endforeach()
 install(EXPORT noneuclidTargets NAMESPACE noneuclid:: DESTINATION ${noneuclid_cmake_dir}
         COMPONENT dev)

@@ -2,7 +2,6 @@
 // sentence (the thread's nw_last_error), and never lets an exception out.
 #include "capi/noneuclid.h"
 
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>

@@ -17,9 +17,8 @@
  *
  * Threads: a world is used by one thread at a time; different worlds on different threads.
  * Memory: making a world allocates; stepping, drawing and reading it do not (the first draw
- * into a canvas of a new size may). Strings handed back live as long as the world (names) or
- * the program (nw_version, the names of formats), or until the thread's next failed call
- * (nw_last_error).
+ * into a canvas of a new size may). nw_version's string lives as long as the program,
+ * nw_last_error's until the calling thread's next failure; bodies' names are copied out.
  *
  * Versions follow semantic versioning of this interface: the same major version keeps every
  * declaration here and its meaning; a minor version adds. While the major version is 0, a
