@@ -26,8 +26,9 @@ _np_group() {
         # The native test suite: GoogleTest, Google Benchmark, the Cairo reference, a virtual X
         # server driven by xdotool and read with xwininfo (x11-utils); shellcheck for the scripts;
         # PROJ's proj (proj-bin) for the earth scene's check against its projections; ccache,
-        # with which run-tests compiles once what its trees compile alike.
-        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ccache ;;
+        # with which run-tests compiles once what its trees compile alike; python3, which runs the
+        # library's examples' checks and its ctypes example (tests/library).
+        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ccache python3 ;;
         # The libFuzzer harnesses (the fuzz preset): clang 14 and libFuzzer's runtime.
         fuzz) echo @build clang-14 libclang-rt-14-dev ;;
         # The Raspberry Pi's architectures: a cross compiler with the target's libc, qemu-user
@@ -57,8 +58,9 @@ _np_group() {
         # build's or cross-<arch>'s.
         package) echo @core help2man dpkg-dev file ;;
         # Testing them (tests/package/package-test): lintian, a Debian 12 tree booted with
-        # systemd-nspawn, readelf (binutils), pgrep (procps), the ARM binaries under qemu-user.
-        package-test) echo lintian debootstrap systemd-container dpkg-dev binutils procps qemu-user ;;
+        # systemd-nspawn, readelf (binutils), pgrep (procps), the ARM binaries under qemu-user;
+        # the compiler and CMake (core) for an example built against noneuclid-dev.
+        package-test) echo @core lintian debootstrap systemd-container dpkg-dev binutils procps qemu-user ;;
         *) return 1 ;;
     esac
 }

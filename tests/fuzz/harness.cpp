@@ -6,9 +6,11 @@
 #include <cstdlib>
 #include <numbers>
 #include <string>
+#include <cstring>
 #include <toml++/toml.h>
 
 #include "app/script.hpp"
+#include "capi/noneuclid.h"
 #include "fixed/fixed.hpp"
 #include "files/board.hpp"
 #include "world/controls.hpp"
@@ -241,6 +243,158 @@ void world(std::string_view input) {
     // The accepted ranges are the engines' (world/ranges.hpp): whatever parses stays finite.
     if (!finite_world(wf) || !finite_world(wd) || !finite_world(wfl))
         broken("a value that is not finite in the fixed, double or float engine", std::string(input));
+}
+
+}  // namespace noneuclid::fuzz
+
+namespace noneuclid::fuzz {
+
+namespace {
+
+// The last error: one plain line, of a bounded length.
+void check_error() {
+    const std::string e = nw_last_error();
+    FUZZ_CHECK(!e.empty() && e.size() <= 600 && world::is_plain(e) && e.find('\n') == std::string::npos, e);
+}
+
+// nw_draw with its arguments from three bytes, against the status they call for.
+void capi_draw(nw_world* w, uint8_t a, uint8_t b, uint8_t c) {
+    static const char* const formats[] = {"xrgb8888", "rgb565", "rgb888", "bgr565", "xbgr8888",
+                                          "bgr888",   "rgba8888", "rgb555", nullptr};
+    const int width = a % 70, height = b % 50;  // 0: refused
+    const char* format = formats[c % 9];
+    int bpp = 0;
+    const bool named = format && nw_format_bytes(format, &bpp) == NW_OK;
+    const long row = static_cast<long>(width) * bpp;
+    const int stride_kind = (c / 9) % 3, capacity_kind = (b >> 6) & 3;
+    const long stride = stride_kind == 0 ? 0 : stride_kind == 1 ? row + a % 5 : row - 1;
+    const long step = stride == 0 ? row : stride;
+    const long needed = height > 0 ? step * (height - 1) + row : 0;
+    const long capacity = capacity_kind == 0 ? needed : capacity_kind == 1 ? needed - 1 : needed + 3;
+    std::vector<uint8_t> buffer(static_cast<std::size_t>(std::max(capacity, 1L)));
+    void* pixels = capacity_kind == 3 ? nullptr : buffer.data();
+    const nw_status got = nw_draw(w, pixels, static_cast<std::size_t>(std::max(capacity, 0L)), width, height,
+                                  static_cast<ptrdiff_t>(stride), format);
+    nw_status want = NW_OK;
+    if (!pixels || !format) want = NW_ERR_NULL;
+    else if (!named) want = NW_ERR_NAME;
+    else if (width < 1 || height < 1 || (stride != 0 && stride < row) || capacity < needed) want = NW_ERR_SIZE;
+    FUZZ_CHECK(got == want, "nw_draw " + std::to_string(width) + "x" + std::to_string(height) + " stride " +
+                                std::to_string(stride) + " capacity " + std::to_string(capacity) + ": " +
+                                std::to_string(got) + " for " + std::to_string(want) + " " + nw_last_error());
+    if (got != NW_OK) check_error();
+}
+
+// One operation (4 bytes) on the world.
+void capi_op(nw_world* w, const uint8_t* op, long& steps) {
+    static const char* const controls[] = {"thrust", "left", "right", "curvature_up", "curvature_down",
+                                           "preset", "reset", "hyperbolic", "flat", "spherical",
+                                           "fire", "instrument", "jump", nullptr};
+    static const char* const projections[] = {"equidistant", "stereographic", "gnomonic", "orthographic",
+                                              "lambert", "mercator", nullptr};
+    const uint8_t a = op[1], b = op[2], c = op[3];
+    nw_status s = NW_OK, want = NW_OK;
+    int n = 0;
+    switch (op[0] % 8) {
+        case 0: {
+            const long k = std::min<long>(a % 8, 200 - steps);
+            steps += k;
+            s = nw_step(w, k);
+            break;
+        }
+        case 1: {
+            const double K = (a - 128) / 100.0;
+            s = nw_set_curvature(w, K);
+            want = K >= -1 && K <= 1 ? NW_OK : NW_ERR_RANGE;
+            double got = 9;
+            if (s == NW_OK) FUZZ_CHECK(nw_curvature(w, &got) == NW_OK && std::abs(got - K) <= 1.0 / 65536, std::to_string(got));
+            break;
+        }
+        case 2: {
+            const char* name = controls[a % 14];
+            s = nw_control(w, name, b & 1);
+            want = !name ? NW_ERR_NULL : a % 14 == 12 ? NW_ERR_NAME : NW_OK;
+            break;
+        }
+        case 3: capi_draw(w, a, b, c); return;
+        case 4: {
+            FUZZ_CHECK(nw_body_count(w, &n) == NW_OK, "nw_body_count");
+            nw_body body;
+            const int i = a - 8;
+            s = nw_body_at(w, i, &body);
+            want = i >= 0 && i < n ? NW_OK : NW_ERR_RANGE;
+            if (s == NW_OK) {
+                FUZZ_CHECK(std::memchr(body.name, 0, sizeof body.name) && std::memchr(body.kind, 0, sizeof body.kind), "names");
+                FUZZ_CHECK(body.theta > -180 - 1e-9 && body.theta <= 180 + 1e-9 && body.vertices >= 1, body.name);
+            }
+            break;
+        }
+        case 5: {
+            FUZZ_CHECK(nw_event_count(w, &n) == NW_OK, "nw_event_count");
+            nw_event e;
+            s = nw_event_at(w, a % 4, &e);
+            want = a % 4 < n ? NW_OK : NW_ERR_RANGE;
+            if (s == NW_OK) FUZZ_CHECK(e.kind >= NW_EVENT_START && e.kind <= NW_EVENT_OVER, std::to_string(e.kind));
+            break;
+        }
+        case 6: {
+            const char* name = projections[a % 7];
+            s = nw_set_view(w, name, b & 1);
+            want = !name ? NW_ERR_NULL : a % 7 == 5 ? NW_ERR_NAME : NW_OK;
+            break;
+        }
+        default: {
+            nw_game g;
+            double t = -1;
+            long frames = -1;
+            FUZZ_CHECK(nw_game_state(w, &g) == NW_OK && g.phase >= 0 && g.phase <= 2, "nw_game_state");
+            FUZZ_CHECK(nw_clock(w, &t, &frames) == NW_OK && frames <= steps && t >= 0, "nw_clock");
+            break;
+        }
+    }
+    FUZZ_CHECK(s == want, "operation " + std::to_string(op[0] % 8) + ": " + std::to_string(s) + " for " +
+                              std::to_string(want) + " " + nw_last_error());
+    if (s != NW_OK) check_error();
+}
+
+}  // namespace
+
+void capi(std::string_view input) {
+    const std::size_t split = input.find("\n%%\n");
+    const std::string_view scene_text = input.substr(0, split);
+    const std::string_view ops = split == std::string_view::npos ? std::string_view() : input.substr(split + 4);
+    if (grid_vertices(scene_text) > kMaxVertices) return;
+    world::Scene s;
+    files::SceneError se;
+    const bool parses = files::parse_scene(std::string(scene_text), "c.toml", s, se);
+    double points = 0;
+    for (const world::SceneBody& b : s.bodies) points += static_cast<double>(b.vertices.size()) * (b.tessellation + 1);
+    if (parses && points > kMaxEdgePoints) return;
+
+    static const char* const engines[] = {"fixed", "double", nullptr, "paper", "abacus"};
+    const std::size_t e = input.size() % std::size(engines);
+    nw_world* w = nullptr;
+    const nw_status made = nw_world_from_text(scene_text.data(), scene_text.size(), engines[e], &w);
+    if (e >= 3) {  // (the C interface runs fixed and double only)
+        FUZZ_CHECK(made == NW_ERR_NAME && !w, std::to_string(made));
+        check_error();
+        return;
+    }
+    if (!parses) {
+        FUZZ_CHECK(made == NW_ERR_SCENE && !w, "a scene the parser refuses was made: " + std::to_string(made));
+        FUZZ_CHECK(std::string(nw_last_error()).rfind("scene text:", 0) == 0, nw_last_error());
+        check_error();
+        return;
+    }
+    if (made != NW_OK) {  // the world's budget and ranges (as the program checks a scene it loads)
+        FUZZ_CHECK(made == NW_ERR_SCENE && !w, std::to_string(made) + " " + nw_last_error());
+        check_error();
+        return;
+    }
+    long steps = 0;
+    for (std::size_t i = 0; i + 4 <= ops.size() && i < 4 * 64; i += 4)
+        capi_op(w, reinterpret_cast<const uint8_t*>(ops.data() + i), steps);
+    nw_world_free(w);
 }
 
 }  // namespace noneuclid::fuzz

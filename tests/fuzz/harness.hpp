@@ -19,13 +19,20 @@ void actions(std::string_view input);  // app::parse_script
 // World<fixed>, World<double>, World<float> and World<double, geo::Paper>, the actions applied while
 // each steps some frames, and the last frame dumped (files::dump_frame).
 void world(std::string_view input);
+// The C interface (src/capi/noneuclid.h): a scene text, a line "%%", then operations, 4 bytes
+// each, on the world made from it (on fixed or double, or a bad engine's name, by the input's
+// length): steps, K, controls, views, drawings of any size, stride,
+// format and buffer (the buffer exactly as large as said: a write past it is ASan's), bodies and
+// events by any index. Every status must be the one the arguments call for, and every failure
+// one plain line in nw_last_error.
+void capi(std::string_view input);
 
 struct Harness {
     const char* name;  // the directory under regressions/ and seeds/
     void (*run)(std::string_view);
 };
 inline constexpr Harness kHarnesses[] = {
-    {"scene", scene}, {"board", board}, {"actions", actions}, {"world", world}};
+    {"scene", scene}, {"board", board}, {"actions", actions}, {"world", world}, {"capi", capi}};
 
 // The largest scene the harnesses build, in vertices (grid lines included) and in edge points
 // (vertices times tessellation): in-range values can ask for millions (a [[grid]] with

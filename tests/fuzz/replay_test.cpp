@@ -56,6 +56,7 @@ TEST(FuzzRegressions, Scene) { replay_all("scene", 1); }
 TEST(FuzzRegressions, Board) { replay_all("board", 1); }
 TEST(FuzzRegressions, Actions) { replay_all("actions", 2); }
 TEST(FuzzRegressions, World) { replay_all("world", 0); }
+TEST(FuzzRegressions, CApi) { replay_all("capi", 0); }
 
 // The scene and board harnesses on the project's own files: the examples, the boards.
 TEST(FuzzRegressions, TheProjectsFilesAsSeeds) {
