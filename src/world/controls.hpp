@@ -38,6 +38,7 @@ inline const char* control_name(Control c) {
                                         "preset",     "reset", "hyperbolic", "flat",        "spherical",
                                         "fire",       "instrument", "strength_up", "strength_down", "projection", "hud",
                                         "quit",       "mute"};
+    static_assert(sizeof names / sizeof names[0] == kControlCount, "a control without its name");
     return names[static_cast<int>(c)];
 }
 inline bool parse_control(const std::string& s, Control& out) {

@@ -66,7 +66,8 @@ inline constexpr int kActionCount = 14;
 inline const char* action_name(Action a) {
     static const char* const names[] = {"thrust", "left",       "right", "curvature_up", "curvature_down", "preset",
                                         "reset",  "hyperbolic", "flat",  "spherical",    "fire",
-                                        "instrument"};
+                                        "instrument", "strength_up", "strength_down"};
+    static_assert(sizeof names / sizeof names[0] == kActionCount, "an action without its name");
     return names[static_cast<int>(a)];
 }
 // Whether the action acts once on its press (rather than while held).
