@@ -93,6 +93,10 @@ nw_status make_world(const char* function, world::Scene& scene, world::EngineKin
     std::string why;
     if (!world::within_budget(scene, why) || !world::within_ranges(scene, why))
         return fail(NW_ERR_SCENE, std::string(function) + ": the scene: " + why + ".");
+    if (!scene.bumps.empty())  // (an uneven world, src/uneven: not in this interface's version yet)
+        return fail(NW_ERR_SCENE, std::string(function) +
+                                      ": the scene has bumps (an uneven world), which this interface does not run yet: "
+                                      "use a scene without [[bump]] tables.");
     auto w = std::make_unique<nw_world>();
     w->world = capi::make_world_handle(engine, scene);
     const render::PaletteFrame frame = render::palette_frame(w->draw.palette);

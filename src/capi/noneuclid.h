@@ -86,9 +86,10 @@ NW_API nw_status nw_clock(const nw_world* w, double* seconds, long* steps);
 NW_API nw_status nw_curvature(const nw_world* w, double* K);
 NW_API nw_status nw_set_curvature(nw_world* w, double K);
 
-/* A control pressed (pressed != 0) or released, applied before the next step: "thrust",
- * "left", "right", "curvature_up", "curvature_down" and "fire" act while held; "preset",
- * "reset", "hyperbolic", "flat", "spherical" and "instrument" act on the press. */
+/* A control pressed (pressed != 0) or released, at once (the world's state changes now; the
+ * next nw_step sees it): "thrust", "left", "right", "curvature_up", "curvature_down" and "fire"
+ * act while held, over the steps that follow; "preset", "reset", "hyperbolic", "flat",
+ * "spherical" and "instrument" act on the press. */
 NW_API nw_status nw_control(nw_world* w, const char* control, int pressed);
 
 /* How nw_draw projects: "equidistant" (the default), "stereographic", "gnomonic",
