@@ -28,6 +28,7 @@ extern const Entry kGerman[] = {
     {Text::legend_buttons, "Schub  links/rechts  Feuer  Krümmung +/-  Vorgabe  Neustart"},
     {Text::legend_buttons_no_fire, "Schub  links/rechts  Krümmung +/-  Vorgabe  Neustart"},
     {Text::legend_zoom_keys, "Pfeile/WASD  +/- Zoom  1 2 3 K=-1,0,1  P Projektion  M Messen  H HUD  R Neustart  Esc"},
+    {Text::legend_uneven_keys, "Pfeile/WASD  Leertaste Feuer  +/- K  < > Beulen  1 2 3 K=-1,0,1  P Ansicht  H HUD  R Neustart  Esc"},
     {Text::legend_zoom_buttons, "Schub  links/rechts  Zoom +/-  Vorgabe  Neustart"},
     {Text::legend_one_button_game, "ein Knopf: Feuer halten gibt Schub, Tippen feuert"},
     {Text::legend_one_button, "ein Knopf: Feuer halten gibt Schub, Tippen wählt das nächste K"},

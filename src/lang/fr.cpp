@@ -28,6 +28,7 @@ extern const Entry kFrench[] = {
     {Text::legend_buttons, "poussée  gauche/droite  feu  courbure +/-  préréglage  reprise"},
     {Text::legend_buttons_no_fire, "poussée  gauche/droite  courbure +/-  préréglage  reprise"},
     {Text::legend_zoom_keys, "flèches/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M mesure  H HUD  R reprise  Échap"},
+    {Text::legend_uneven_keys, "flèches/WASD  Espace feu  +/- K  < > bosses  1 2 3 K=-1,0,1  P vue  H HUD  R reprise  Échap"},
     {Text::legend_zoom_buttons, "poussée  gauche/droite  zoom +/-  préréglage  reprise"},
     {Text::legend_one_button_game, "un bouton : tenir feu pour pousser, appuyer pour tirer"},
     {Text::legend_one_button, "un bouton : tenir feu pour pousser, appuyer pour le K suivant"},

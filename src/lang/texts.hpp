@@ -35,6 +35,7 @@
     X(legend_buttons, "thrust  left/right  fire  curvature +/-  preset  reset")                     \
     X(legend_buttons_no_fire, "thrust  left/right  curvature +/-  preset  reset")                   \
     X(legend_zoom_keys, "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
+    X(legend_uneven_keys, "arrows/WASD  Space fire  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
     X(legend_zoom_buttons, "thrust  left/right  zoom +/-  preset  reset")                           \
     X(legend_one_button_game, "one button: hold fire to thrust, tap to fire")                       \
     X(legend_one_button, "one button: hold fire to thrust, tap for the next K")                     \
