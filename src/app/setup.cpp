@@ -143,7 +143,8 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     const bool fire = scene.game.on || !scene.measures.empty();
     Text words = scene.zoom.on() ? (keys ? Text::legend_zoom_keys : Text::legend_zoom_buttons)
                                  : (keys ? Text::legend_keys : fire ? Text::legend_buttons : Text::legend_buttons_no_fire);
-    if (keys && !scene.bumps.empty()) words = Text::legend_uneven_keys;  // (an uneven world: P its views, < > its bumps)
+    if (keys && !scene.bumps.empty())  // (an uneven world: P its two views, < > its bumps)
+        words = scene.game.on ? Text::legend_uneven_game_keys : Text::legend_uneven_keys;
     if (o.one_button) words = scene.game.on ? Text::legend_one_button_game : Text::legend_one_button;
     so.legend = lang::text(words, so.language);
     so.attract.idle_seconds = o.attract;

@@ -35,7 +35,8 @@
     X(legend_buttons, "thrust  left/right  fire  curvature +/-  preset  reset")                     \
     X(legend_buttons_no_fire, "thrust  left/right  curvature +/-  preset  reset")                   \
     X(legend_zoom_keys, "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
-    X(legend_uneven_keys, "arrows/WASD  Space fire  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
+    X(legend_uneven_keys, "arrows/WASD  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
+    X(legend_uneven_game_keys, "arrows/WASD  Space fire  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
     X(legend_zoom_buttons, "thrust  left/right  zoom +/-  preset  reset")                           \
     X(legend_one_button_game, "one button: hold fire to thrust, tap to fire")                       \
     X(legend_one_button, "one button: hold fire to thrust, tap for the next K")                     \
@@ -71,8 +72,8 @@
     X(page_own_scene, "your own scene (TOML)")                                                      \
     X(page_run_scene, "run this scene")                                                             \
     X(page_or, "or")                                                                                \
-    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
-    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
+    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, < and > turn an uneven world's bumps, R reset, Esc ends the run.") \
+    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, < and > turn an uneven world's bumps, R reset, Esc ends the run.") \
     X(page_loading, "loading…")                                                                     \
     X(page_not_running, "not running")                                                              \
     X(page_ended, "ended")                                                                          \

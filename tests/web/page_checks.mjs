@@ -183,6 +183,31 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     });
   }
 
+  // An uneven world (src/uneven): the lens, its mass turned up with '.', the view switched with P;
+  // the canvas equals render of the run's recording, which holds the strength key's presses.
+  await check('?scene=lens: the strength key and the inhabitant\'s view; the canvas equals render of its recording', async () => {
+    const {page, started} = await open('scene=lens&size=400x300');
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    for (const [key, code, keyCode, frames] of [['.', 'Period', 190, 30], ['p', 'KeyP', 80, 2]]) {
+      await page.key('keyDown', key, code, keyCode);
+      await waitFrames(page, frames);
+      await page.key('keyUp', key, code, keyCode);
+      await waitFrames(page, 2);
+    }
+    await page.evaluate('window.noneuclid.stop()');
+    const shot = path.join(work, 'lens-page.png'), rec = path.join(work, 'lens.rec');
+    await canvasPng(page, shot);
+    const text = await page.evaluate('window.noneuclid.recording()');
+    fs.writeFileSync(rec, text);
+    expect(/press strength_up\n/.test(text) && /tap projection\n/.test(text), `the recording lacks the keys:\n${text.slice(0, 600)}`);
+    render(['--actions', rec, '--out', path.join(work, 'lens-render.png')]);
+    const same = pngDiff(shot, path.join(work, 'lens-render.png'));
+    expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
+    expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+    await page.close();
+  });
+
   await check('?lang=xx is refused in one sentence; the page stays in English', async () => {
     const {page, started} = await open('lang=xx&scene=kiosk');
     expect(started === false, 'the page started with ?lang=xx');
