@@ -1,6 +1,8 @@
 #include "files/board.hpp"
 
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "geometry/geometry.hpp"
 #include "render/palette.hpp"
@@ -12,6 +14,13 @@
 
 namespace noneuclid::files {
 namespace {
+
+// Every control a button may name, from the table (world/controls.hpp): "thrust, left, ... or mute".
+std::string control_list() {
+    std::vector<std::string> names;
+    for (int i = 0; i < world::kControlCount; ++i) names.emplace_back(world::control_name(static_cast<world::Control>(i)));
+    return world::or_list(names);
+}
 
 using tomlr::Bad, tomlr::Reader, tomlr::tables, tomlr::type_name;
 
@@ -104,11 +113,11 @@ void read_board(const toml::table& root, Board& b) {
             const Reader br(t, "button: ");
             br.only({"action", "gpio", "pin", "key"});
             const toml::node* a = t.get("action");
-            if (!a) throw Bad{t.source(), "button: expected action = \"thrust\" (or left, right, curvature_up, curvature_down, preset, reset, projection, hud, quit), found none"};
+            if (!a) throw Bad{t.source(), "button: expected action = \"thrust\" (or " + control_list() + "), found none"};
             BoardButton bb;
             const std::string action = br.string("action", "");
             if (!world::parse_control(action, bb.control))
-                throw Bad{a->source(), "button: unknown action \"" + world::printable(action) + "\" (expected thrust, left, right, curvature_up, curvature_down, preset, reset, projection, hud or quit)"};
+                throw Bad{a->source(), "button: unknown action \"" + world::printable(action) + "\" (expected " + control_list() + ")"};
             const Reader named(t, "button " + world::quote(action) + ": ");
             bb.gpio = static_cast<int>(named.integer("gpio", -1, 0, 1023, "line offset on the GPIO chip, the BCM number on a Raspberry Pi"));
             bb.pin = static_cast<int>(named.integer("pin", 0, 1, 40, "physical pin on the 40-pin header"));
