@@ -39,7 +39,7 @@ bool setting(const char* key, const char* value, Recording& out, char* why, std:
     bool flag = false;
     auto must_be = [&](const char* want) {
         if (std::strcmp(value, want) == 0) return true;
-        std::snprintf(why, size, "the setting '%s %s': the firmware draws only %s %s.", key, value, key, want);
+        std::snprintf(why, size, "the setting '%.24s %.40s': the firmware draws only %.24s %s.", key, value, key, want);
         return false;
     };
     if (std::strcmp(key, "scene") == 0) {
