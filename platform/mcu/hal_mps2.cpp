@@ -20,6 +20,9 @@ struct Gpio {
 Gpio& gpio() { return *reinterpret_cast<Gpio*>(0x40010000u); }
 
 constexpr uint8_t kSpiClock = 0, kSpiData = 1;  // the bit-banged bus's pins
+// The outputs' levels as last written: each pin_write is one store of every output's level, not
+// a read-modify-write of DATAOUT (so a log of the stores, qemu's -d unimp, is the wire itself).
+uint32_t g_out = 0;
 
 }  // namespace
 
@@ -33,7 +36,8 @@ void pin_input_pullup(uint8_t pin) { gpio().outenclr = 1u << pin; }
 
 void pin_write(uint8_t pin, bool high) {
     const uint32_t bit = 1u << pin;
-    gpio().dataout = high ? gpio().dataout | bit : gpio().dataout & ~bit;
+    g_out = high ? g_out | bit : g_out & ~bit;
+    gpio().dataout = g_out;
 }
 
 bool pin_read(uint8_t pin) { return (gpio().data >> pin) & 1u; }
