@@ -16,6 +16,7 @@ namespace noneuclid::boards::mcu_st7789 {
 
 inline constexpr const char* kScene = "asteroids";
 inline constexpr bool kAntialias = false;
+inline constexpr bool kHud = true;  // the score, lives and level (English, the built-in font)
 
 // The display: SPI's clock and data pins are the HAL's (hal::spi_begin); these are the others.
 inline constexpr uint8_t kDisplayDc = 2, kDisplayCs = 3, kDisplayReset = 4, kDisplayBacklight = 5;

@@ -21,6 +21,7 @@ bool start(Recording& setup) {
     static_assert(sizeof pins::kScene <= sizeof setup.scene);
     for (int i = 0; pins::kScene[i] != '\0'; ++i) setup.scene[i] = pins::kScene[i];
     setup.aa = pins::kAntialias;
+    setup.hud = pins::kHud;
     for (const pins::Button& b : pins::kButtons) hal::pin_input_pullup(b.pin);
     g_display.start();
     return true;

@@ -13,6 +13,8 @@
 #include "heap.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/font.hpp"
+#include "render/hud.hpp"
 #include "render/palette.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
@@ -27,10 +29,19 @@ constexpr double kDt = 1.0 / 60;  // world seconds a step: the program's
 // The picture: static, so that it is counted in the firmware's RAM, never on the heap.
 alignas(4) uint16_t g_pixels[board::kWidth * board::kHeight];
 
+// The view: the drawing options and the HUD, which the projection and hud controls change.
+struct View {
+    render::DrawOptions draw;
+    bool hud = false;
+    long best = 0;          // the game's high score (app/session.cpp's best_, new_best_)
+    bool new_best = false;
+};
+
 // A control as app/session.cpp's apply() takes it: a world action when it changes something
 // (a press of what is held is not, but for the actions that act on each press); the projection
-// control, the next projection on its press.
-void apply(World& w, render::DrawOptions& o, world::Control c, bool pressed) {
+// control, the next projection on its press; hud, the HUD on or off on its press.
+void apply(World& w, View& v, world::Control c, bool pressed) {
+    render::DrawOptions& o = v.draw;
     world::Action a{};
     if (world::control_action(c, a)) {
         if (pressed == w.held(a) && !world::acts_on_press(a)) return;
@@ -38,6 +49,7 @@ void apply(World& w, render::DrawOptions& o, world::Control c, bool pressed) {
         else w.release(a);
         return;
     }
+    if (pressed && c == world::Control::hud) v.hud = !v.hud;
     if (!pressed || c != world::Control::projection) return;
     const int count = static_cast<int>(sizeof geo::kProjections / sizeof geo::kProjections[0]);
     int i = 0;
@@ -46,7 +58,7 @@ void apply(World& w, render::DrawOptions& o, world::Control c, bool pressed) {
 }
 
 // The controls due by the world's time now.
-void play_due(World& w, render::DrawOptions& o) {
+void play_due(World& w, View& o) {
     RecordedEvent e[8];
     for (int n; (n = board::controls(w.time, e, 8)) > 0;)
         for (int i = 0; i < n; ++i) {
@@ -67,6 +79,45 @@ render::DrawOptions draw_options(const Recording& r) {
     return o;
 }
 
+// After a step, as app/session.cpp's game_events: a game that starts has no new best yet; one
+// that ends may beat the best.
+void game_events(const World& w, View& v) {
+    const auto& g = w.game();
+    for (int i = 0; i < g.event_count(); ++i) {
+        const world::GameEvent& e = g.events()[i];
+        if (e.kind == world::GameEvent::start) v.new_best = false;
+        if (e.kind != world::GameEvent::over) continue;
+        v.new_best = e.value > v.best;
+        if (v.new_best) v.best = e.value;
+    }
+}
+
+// The HUD as app/session.cpp's draw_hud fills it for a recording played by render: English, the
+// built-in font, the buttons' legend, no frame rate, no instruments' panels (none is on).
+void draw_hud(const render::Canvas& c, const World& w, const View& v, const char* scene) {
+    using lang::Text;
+    const world::Scene& s = w.scene();
+    const bool fire = s.game.on || !s.measures.empty();
+    render::HudInfo info;
+    info.K = static_cast<double>(w.K);
+    info.scene = scene;
+    info.projection = render::projection_words(v.draw.projection, lang::Language::en);
+    info.controls = lang::text(s.zoom.on() ? Text::legend_zoom_buttons : fire ? Text::legend_buttons
+                                                                              : Text::legend_buttons_no_fire,
+                               lang::Language::en);
+    const auto& g = w.game();
+    render::HudGame& h = info.game;
+    h.on = g.on();
+    if (h.on) {
+        h.score = g.score, h.best = v.best, h.new_best = v.new_best, h.lives = g.lives, h.level = g.level;
+        if (g.phase == world::GamePhase::ready) h.screen = render::HudGame::ready;
+        else if (g.phase == world::GamePhase::over) h.screen = render::HudGame::over;
+        else h.screen = w.time - g.level_since < 2 ? render::HudGame::new_level : render::HudGame::none;
+    }
+    const render::PaletteFrame colours = render::palette_frame(v.draw.palette);
+    render::draw_hud(c, render::builtin_font(), info, colours.text, colours.dim);
+}
+
 [[noreturn]] void run() {
     static Recording setup;  // (static: its events are kilobytes, the stack is small)
     if (!board::start(setup)) board::finish(false, "noneuclid firmware: no start.");
@@ -84,16 +135,18 @@ render::DrawOptions draw_options(const Recording& r) {
     World& w = *made;
     static Scratch scratch;
     scratch.prepare(w);
-    render::DrawOptions o = draw_options(setup);
+    View o{draw_options(setup), setup.hud, setup.best};
     const render::Canvas canvas(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2, render::PixelFormat::rgb565());
     const std::size_t allocations = heap_allocations();
 
     play_due(w, o);
     for (long f = 0;; ++f) {
-        render::draw_world(canvas, w, o, scratch);
+        render::draw_world(canvas, w, o.draw, scratch);
+        if (o.hud) draw_hud(canvas, w, o, setup.scene);
         if (!board::present(g_pixels, f)) board::finish(false, "noneuclid firmware: the display failed.");
         if (f == setup.frames && !board::runs_forever()) break;
         w.step(kDt);
+        game_events(w, o);
         play_due(w, o);
     }
     const std::size_t after = heap_allocations() - allocations;

@@ -34,7 +34,7 @@ bool control_named(const char* name, world::Control& out) {
     return false;
 }
 
-// One setting line (key, value). Settings that only the HUD reads are ignored (the HUD is off).
+// One setting line (key, value).
 bool setting(const char* key, const char* value, Recording& out, char* why, std::size_t size) {
     bool flag = false;
     auto must_be = [&](const char* want) {
@@ -50,21 +50,22 @@ bool setting(const char* key, const char* value, Recording& out, char* why, std:
     if (std::strcmp(key, "engine") == 0) return must_be("fixed");
     if (std::strcmp(key, "size") == 0) return must_be("240x240");
     if (std::strcmp(key, "format") == 0) return must_be("rgb565");
-    if (std::strcmp(key, "hud") == 0) return must_be("off");
     if (std::strcmp(key, "palette") == 0) return must_be("scene");
+    if (std::strcmp(key, "lang") == 0) return out.named_lang = must_be("en");
+    if (std::strcmp(key, "font") == 0) return out.named_font = must_be("builtin");
+    if (std::strcmp(key, "legend") == 0) return must_be("buttons");
+    if (std::strcmp(key, "large-hud") == 0) return must_be("off");
     if (std::strcmp(key, "aa") == 0 && on_off(value, flag)) return out.aa = flag, true;
+    if (std::strcmp(key, "hud") == 0 && on_off(value, flag)) return out.hud = flag, true;
     if (std::strcmp(key, "projection") == 0) {
         for (geo::Projection p : geo::kProjections)
             if (std::strcmp(value, geo::projection_name(p)) == 0) return out.projection = p, true;
     }
-    if (std::strcmp(key, "frames") == 0) {
+    if (std::strcmp(key, "frames") == 0 || std::strcmp(key, "best") == 0) {
         char* end = nullptr;
         const long n = std::strtol(value, &end, 10);
-        if (*end == '\0' && n >= 0) return out.frames = n, true;
+        if (*end == '\0' && n >= 0) return (key[0] == 'f' ? out.frames : out.best) = n, true;
     }
-    if (std::strcmp(key, "lang") == 0 || std::strcmp(key, "legend") == 0 || std::strcmp(key, "font") == 0 ||
-        std::strcmp(key, "best") == 0 || std::strcmp(key, "large-hud") == 0 || std::strcmp(key, "hud-scale") == 0)
-        return true;
     std::snprintf(why, size, "the setting '%s %s' is not one the firmware plays.", key, value);
     return false;
 }
@@ -98,9 +99,8 @@ bool parse_recording(char* text, Recording& out, char* why, std::size_t why_size
         e.time = time;
         const bool known = kind && (std::strcmp(kind, "press") == 0 || std::strcmp(kind, "release") == 0 ||
                                     std::strcmp(kind, "tap") == 0);
-        if (!known || !what || !control_named(what, e.control) || e.control == world::Control::hud ||
-            e.control == world::Control::quit || next_word(&at)) {
-            std::snprintf(why, why_size, "line %ld: expected 'TIME press|release|tap CONTROL' (no hud, mark or attract).",
+        if (!known || !what || !control_named(what, e.control) || e.control == world::Control::quit || next_word(&at)) {
+            std::snprintf(why, why_size, "line %ld: expected 'TIME press|release|tap CONTROL' (not quit, mark or attract).",
                           line);
             return false;
         }
@@ -114,6 +114,13 @@ bool parse_recording(char* text, Recording& out, char* why, std::size_t why_size
         int i = out.count++;
         for (; i > 0 && out.events[i - 1].time > e.time; --i) out.events[i] = out.events[i - 1];
         out.events[i] = e;
+    }
+    // Without them render takes the machine's console font and locale, which the firmware has not.
+    bool hud_event = false;
+    for (int i = 0; i < out.count; ++i) hud_event = hud_event || out.events[i].control == world::Control::hud;
+    if ((out.hud || hud_event) && !(out.named_font && out.named_lang)) {
+        std::snprintf(why, why_size, "with the HUD on, the recording must say 'font builtin' and 'lang en'.");
+        return false;
     }
     return true;
 }

@@ -45,6 +45,14 @@ extern "C" void mcu_fault() {
     }
 }
 
+// newlib's own allocations (its C library: dtoa's number cache, say) go through _malloc_r, not
+// operator new: linked with --wrap=_malloc_r, they come here and are counted too.
+extern "C" void* __real__malloc_r(struct _reent* r, std::size_t bytes);
+extern "C" void* __wrap__malloc_r(struct _reent* r, std::size_t bytes) {
+    ++g_allocations;
+    return __real__malloc_r(r, bytes);
+}
+
 // newlib's malloc asks for memory here: the room between .bss and the stack, never given back.
 extern "C" void* _sbrk(ptrdiff_t grow) {
     if (grow < 0 || grow > &mcu_heap_end - g_break) return reinterpret_cast<void*>(-1);
@@ -60,9 +68,8 @@ extern "C" __attribute__((section(".vectors"), used)) const Handler mcu_vectors[
     reinterpret_cast<Handler>(&mcu_stack_top), mcu_reset, mcu_fault, mcu_fault, mcu_fault, mcu_fault, mcu_fault,
 };
 
-// Every allocation counted: -fno-exceptions, so a failed one ends the program.
+// (Counted by malloc, above.) -fno-exceptions: a failed allocation ends the program.
 void* operator new(std::size_t bytes) {
-    ++g_allocations;
     if (void* p = std::malloc(bytes ? bytes : 1)) return p;
     std::abort();
 }
