@@ -1,12 +1,13 @@
 // noneuclid on a microcontroller (docs/microcontroller.md): one built-in scene on the fixed
-// engine, its game, drawn by the CPU rasteriser into a static 240x240 RGB565 buffer that the
-// board presents (board.hpp). The world and its drawing buffers are made once at start (the
+// engine, its game and HUD, drawn by the CPU rasteriser into a static 240x240 RGB565 buffer
+// that the board presents (board.hpp). The world and its drawing buffers are made once at start (the
 // heap's only use); the frames allocate nothing, which the firmware checks and reports.
 //
 // The frame order is `noneuclid render`'s (app/picture.cpp): the controls due at time 0, then
 // frame 0 drawn; each next frame one step of 1/60 s, the controls due at the new time, the
-// frame drawn. The controls act as the program's session applies them (app/session.cpp, with no
-// attract mode and no HUD), so a recording's frames equal render's, pixel for pixel.
+// frame drawn. The controls act, and the HUD is filled, as the program's session does
+// (app/session.cpp, without attract mode), so a recording's frames equal render's, pixel for
+// pixel.
 #include <cstdio>
 
 #include "board.hpp"
