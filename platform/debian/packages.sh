@@ -37,6 +37,10 @@ _np_group() {
         cross-arm64) echo @core crossbuild-essential-arm64 qemu-user libgtest-dev libgpiod-dev:arm64 ;;
         cross-armhf) echo @core crossbuild-essential-armhf qemu-user libgtest-dev libgpiod-dev:armhf ;;
         cross) echo @cross-arm64 @cross-armhf ;;
+        # The microcontroller firmware (platform/mcu) and its test under emulation (tests/mcu):
+        # the bare-metal ARM compiler, newlib and its C++ library, and qemu-system-arm for the
+        # Cortex-M3 board (mps2-an385); the native build that renders the reference is test's.
+        mcu) echo @core gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm ;;
         # The web page (the web preset): no host compiler, emscripten brings clang, lld,
         # binaryen, Node.js and Python.
         web) echo cmake make libglm-dev libtomlplusplus-dev emscripten ;;
@@ -64,7 +68,7 @@ _np_group() {
         *) return 1 ;;
     esac
 }
-_np_names="core build test fuzz cross-arm64 cross-armhf cross web web-test system package package-test"
+_np_names="core build test fuzz cross-arm64 cross-armhf cross mcu web web-test system package package-test"
 
 # The kernel ABI Debian's linux-image-amd64 points at, e.g. 6.1.0-56 (empty without package lists).
 noneuclid_kernel_abi() {

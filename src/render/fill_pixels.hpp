@@ -147,7 +147,7 @@ void texcoord(const Frame<T>& f, const geo::Vec3<T>& L, int64_t& s8, int64_t& t8
 // coordinates clamped to +-4 (every point inside is within 1.4 of the centre) so that no
 // product overflows.
 inline void texcoord(const Frame<fixed>& f, const geo::Vec3<fixed>& L, int64_t& s8, int64_t& t8) {
-    const int32_t lw = std::clamp(L.w.raw(), 0, (fx::tables::kEquiRange << 16) - 1);
+    const int32_t lw = std::clamp<int32_t>(L.w.raw(), 0, (fx::tables::kEquiRange << 16) - 1);
     const int64_t E = fx::equidistant_ratio_q30(static_cast<uint32_t>(lw));        // Q30
     const int64_t G = (E * int64_t{f.k.raw()}) >> 30;                               // Q16 texels per unit
     const int64_t lx = std::clamp<int64_t>(L.x.raw(), -(4 << 16), 4 << 16), ly = std::clamp<int64_t>(L.y.raw(), -(4 << 16), 4 << 16);

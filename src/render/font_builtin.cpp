@@ -141,12 +141,21 @@ constexpr ArtBlock kLatinArt[] = {
 using GlyphTable = std::array<uint8_t, kBuiltinGlyphs * kCellHeight>;
 using Drawn = std::array<bool, kBuiltinGlyphs>;
 
-// Throwing here is a compile error, since the table is built in a constant expression.
+// Throwing here is a compile error, since the table is built in a constant expression. Without
+// exceptions (the microcontroller firmware, docs/microcontroller.md) GCC refuses a throw even
+// there, so a call to a function that is not constexpr stops the constant evaluation the same
+// way.
+#if defined(__cpp_exceptions)
+#define NONEUCLID_TABLE_ERROR(why) throw why
+#else
+void table_error(const char*) {}
+#define NONEUCLID_TABLE_ERROR(why) table_error(why)
+#endif
 constexpr void draw_block(const ArtBlock& block, GlyphTable& table, Drawn& drawn) {
     for (int r = 0; r < kCellHeight; ++r) {
         const std::string_view row = block.rows[r];
         if (row.size() != std::size_t(block.count * kCellWidth - 1))
-            throw "bad row length";
+            NONEUCLID_TABLE_ERROR("bad row length");
         for (int j = 0; j < block.count; ++j) {
             const int code = int(block.first) + j;
             uint8_t bits = 0;
@@ -155,18 +164,18 @@ constexpr void draw_block(const ArtBlock& block, GlyphTable& table, Drawn& drawn
                 if (p == '#') {
                     bits = uint8_t(bits | (0x80 >> c));
                 } else if (p != '.') {
-                    throw "a glyph pixel is neither '#' nor '.'";
+                    NONEUCLID_TABLE_ERROR("a glyph pixel is neither '#' nor '.'");
                 }
             }
             if (j + 1 < block.count && row[std::size_t(j * kCellWidth + kCellWidth - 1)] != ' ')
-                throw "glyphs must be separated by one space";
+                NONEUCLID_TABLE_ERROR("glyphs must be separated by one space");
             table[std::size_t(code * kCellHeight + r)] = bits;
         }
     }
     for (int j = 0; j < block.count; ++j) {
         const int code = int(block.first) + j;
         if (code >= kBuiltinGlyphs || drawn[std::size_t(code)])
-            throw "glyph drawn twice";
+            NONEUCLID_TABLE_ERROR("glyph drawn twice");
         drawn[std::size_t(code)] = true;
     }
 }
@@ -175,7 +184,7 @@ constexpr void compose(const Composed& g, GlyphTable& table, Drawn& drawn) {
     const auto row = [&](int code, int r) -> uint8_t& { return table[std::size_t(code * kCellHeight + r)]; };
     const int code = int(g.code), base = int(g.base), a = int(g.accent);
     if (code >= kBuiltinGlyphs || drawn[std::size_t(code)] || !drawn[std::size_t(base)])
-        throw "a composed glyph is drawn twice, or its letter is not drawn";
+        NONEUCLID_TABLE_ERROR("a composed glyph is drawn twice, or its letter is not drawn");
     const bool capital = g.base >= 'A' && g.base <= 'Z';
     for (int r = 0; r < kCellHeight; ++r) row(code, r) = row(base, r);
     if (g.accent != Accent::cedilla) {
@@ -207,7 +216,7 @@ constexpr Built build_builtin() {
     for (const Composed& g : kComposed) compose(g, b.table, b.drawn);
     for (int code = 32; code <= 126; ++code)
         if (!b.drawn[std::size_t(code)])
-            throw "a printable ASCII glyph is missing";
+            NONEUCLID_TABLE_ERROR("a printable ASCII glyph is missing");
     // The rest (control characters, DEL, Latin-1 not drawn here) show '?'.
     for (int code = 0; code < kBuiltinGlyphs; ++code) {
         if (b.drawn[std::size_t(code)])

@@ -1,0 +1,164 @@
+// noneuclid on a microcontroller (docs/microcontroller.md): one built-in scene on the fixed
+// engine, its game and HUD, drawn by the CPU rasteriser into a static 240x240 RGB565 buffer
+// that the board presents (board.hpp). The world and its drawing buffers are made once at start (the
+// heap's only use); the frames allocate nothing, which the firmware checks and reports.
+//
+// The frame order is `noneuclid render`'s (app/picture.cpp): the controls due at time 0, then
+// frame 0 drawn; each next frame one step of 1/60 s, the controls due at the new time, the
+// frame drawn. The controls act, and the HUD is filled, as the program's session does
+// (app/session.cpp, without attract mode), so a recording's frames equal render's, pixel for
+// pixel.
+#include <cstdio>
+
+#include "board.hpp"
+#include "heap.hpp"
+#include "render/canvas.hpp"
+#include "render/draw_world.hpp"
+#include "render/font.hpp"
+#include "render/hud.hpp"
+#include "render/palette.hpp"
+#include "world/scene.hpp"
+#include "world/world.hpp"
+
+namespace noneuclid::mcu {
+namespace {
+
+using World = world::World<fx::fixed>;
+using Scratch = render::DrawScratch<World::scalar, World::engine>;
+constexpr double kDt = 1.0 / 60;  // world seconds a step: the program's
+
+// The picture: static, so that it is counted in the firmware's RAM, never on the heap.
+alignas(4) uint16_t g_pixels[board::kWidth * board::kHeight];
+
+// The view: the drawing options and the HUD, which the projection and hud controls change.
+struct View {
+    render::DrawOptions draw;
+    bool hud = false;
+    long best = 0;          // the game's high score (app/session.cpp's best_, new_best_)
+    bool new_best = false;
+};
+
+// A control as app/session.cpp's apply() takes it: a world action when it changes something
+// (a press of what is held is not, but for the actions that act on each press); the projection
+// control, the next projection on its press; hud, the HUD on or off on its press.
+void apply(World& w, View& v, world::Control c, bool pressed) {
+    render::DrawOptions& o = v.draw;
+    world::Action a{};
+    if (world::control_action(c, a)) {
+        if (pressed == w.held(a) && !world::acts_on_press(a)) return;
+        if (pressed) w.press(a);
+        else w.release(a);
+        return;
+    }
+    if (pressed && c == world::Control::hud) v.hud = !v.hud;
+    if (!pressed || c != world::Control::projection) return;
+    const int count = static_cast<int>(sizeof geo::kProjections / sizeof geo::kProjections[0]);
+    int i = 0;
+    while (i < count && geo::kProjections[i] != o.projection) ++i;
+    o.projection = geo::kProjections[(i + 1) % count];
+}
+
+// The controls due by the world's time now.
+void play_due(World& w, View& o) {
+    RecordedEvent e[8];
+    for (int n; (n = board::controls(w.time, e, 8)) > 0;)
+        for (int i = 0; i < n; ++i) {
+            apply(w, o, e[i].control, e[i].pressed);
+            if (e[i].tap) apply(w, o, e[i].control, false);
+        }
+}
+
+// render's options for this recording (app/setup.cpp's session_options): its projection and
+// anti-aliasing, lines one pixel wide, the scene palette's frame colours.
+render::DrawOptions draw_options(const Recording& r) {
+    render::DrawOptions o;
+    o.projection = r.projection;
+    o.antialias = r.aa;
+    o.line_width = render::kSub;
+    const render::PaletteFrame frame = render::palette_frame(o.palette);
+    o.background = frame.background, o.outside = frame.outside, o.rim = frame.rim;
+    return o;
+}
+
+// After a step, as app/session.cpp's game_events: a game that starts has no new best yet; one
+// that ends may beat the best.
+void game_events(const World& w, View& v) {
+    const auto& g = w.game();
+    for (int i = 0; i < g.event_count(); ++i) {
+        const world::GameEvent& e = g.events()[i];
+        if (e.kind == world::GameEvent::start) v.new_best = false;
+        if (e.kind != world::GameEvent::over) continue;
+        v.new_best = e.value > v.best;
+        if (v.new_best) v.best = e.value;
+    }
+}
+
+// The HUD as app/session.cpp's draw_hud fills it for a recording played by render: English, the
+// built-in font, the buttons' legend, no frame rate, no instruments' panels (none is on).
+void draw_hud(const render::Canvas& c, const World& w, const View& v, const char* scene) {
+    using lang::Text;
+    const world::Scene& s = w.scene();
+    const bool fire = s.game.on || !s.measures.empty();
+    render::HudInfo info;
+    info.K = static_cast<double>(w.K);
+    info.scene = scene;
+    info.projection = render::projection_words(v.draw.projection, lang::Language::en);
+    info.controls = lang::text(s.zoom.on() ? Text::legend_zoom_buttons : fire ? Text::legend_buttons
+                                                                              : Text::legend_buttons_no_fire,
+                               lang::Language::en);
+    const auto& g = w.game();
+    render::HudGame& h = info.game;
+    h.on = g.on();
+    if (h.on) {
+        h.score = g.score, h.best = v.best, h.new_best = v.new_best, h.lives = g.lives, h.level = g.level;
+        if (g.phase == world::GamePhase::ready) h.screen = render::HudGame::ready;
+        else if (g.phase == world::GamePhase::over) h.screen = render::HudGame::over;
+        else h.screen = w.time - g.level_since < 2 ? render::HudGame::new_level : render::HudGame::none;
+    }
+    const render::PaletteFrame colours = render::palette_frame(v.draw.palette);
+    render::draw_hud(c, render::builtin_font(), info, colours.text, colours.dim);
+}
+
+[[noreturn]] void run() {
+    static Recording setup;  // (static: its events are kilobytes, the stack is small)
+    if (!board::start(setup)) board::finish(false, "noneuclid firmware: no start.");
+    char why[160] = "";
+    World* made = nullptr;
+    {  // The scene is copied into the world: its own copy is freed before the buffers are made.
+        world::Scene scene;
+        std::string reason;
+        if (!world::builtin_scene(setup.scene, world::SceneParams{}, scene, &reason)) {
+            std::snprintf(why, sizeof why, "noneuclid firmware: no built-in scene '%s'.", setup.scene);
+            board::finish(false, why);
+        }
+        made = new World(scene);
+    }
+    World& w = *made;
+    static Scratch scratch;
+    scratch.prepare(w);
+    View o{draw_options(setup), setup.hud, setup.best};
+    const render::Canvas canvas(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2, render::PixelFormat::rgb565());
+    const std::size_t allocations = heap_allocations();
+
+    play_due(w, o);
+    for (long f = 0;; ++f) {
+        render::draw_world(canvas, w, o.draw, scratch);
+        if (o.hud) draw_hud(canvas, w, o, setup.scene);
+        if (!board::present(g_pixels, f)) board::finish(false, "noneuclid firmware: the display failed.");
+        if (f == setup.frames && !board::runs_forever()) break;
+        w.step(kDt);
+        game_events(w, o);
+        play_due(w, o);
+    }
+    const std::size_t after = heap_allocations() - allocations;
+    std::snprintf(why, sizeof why,
+                  "noneuclid firmware: %ld frames of %s; heap %u of %u bytes, %u allocations at start, %u in the frames.",
+                  setup.frames + 1, setup.scene, static_cast<unsigned>(heap_used()), static_cast<unsigned>(heap_room()),
+                  static_cast<unsigned>(allocations), static_cast<unsigned>(after));
+    board::finish(after == 0, why);
+}
+
+}  // namespace
+}  // namespace noneuclid::mcu
+
+int main() { noneuclid::mcu::run(); }
