@@ -26,7 +26,8 @@
 # uneven-lens.png  the lens scene in its chart and in the inhabitant's view, 400x400 each
 #                (docs/uneven.md); uneven-hills.png the hills scene's chart at K = -0.6 and 0,
 #                and its inhabitant's view at 0; uneven-gravity.png the game around a mass
-#                (game.actions), chart view, 800x480
+#                (game.actions), chart view, 800x480; uneven-triangle.png a triangle's reading about a
+#                mass (tests/files/data/bumps.toml), chart view, 800x480
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -148,3 +149,4 @@ python3 "$tmp/join.py" "$tmp/lens-stereographic.png" "$tmp/lens-equidistant.png"
 python3 "$tmp/join.py" "$tmp/h1.png" "$tmp/h2.png" "$tmp/h3.png" docs/images/uneven-hills.png
 sed 's/^scene .*/scene gravity/' docs/images/game.actions > "$tmp/gravity.actions"
 "$nc" render --actions "$tmp/gravity.actions" --frames 570 --projection stereographic --out docs/images/uneven-gravity.png
+"$nc" render --scene tests/files/data/bumps.toml --projection stereographic --hud --aa --frames 10 --out docs/images/uneven-triangle.png

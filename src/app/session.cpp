@@ -96,7 +96,8 @@ public:
     }
 
     bool mark_at(double x, double y, int width, int height) override {
-        if constexpr (kUneven<W>) return false;  // (no instruments in an uneven world yet)
+        if constexpr (kUneven<W>)  // (a tap marks the chart view: it is the stereographic projection)
+            if (!uneven::is_chart_view(options_.draw.projection)) return false;
         const double K = static_cast<double>(world_.K), R = static_cast<double>(world_.R);
         const geo::Projection p = options_.draw.projection;
         const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p);

@@ -57,6 +57,7 @@ void Drawing::prepare(const World& w) {
         bodies_[i].points.resize(3 * (n * tess + 2) + 4);
     }
     ray_.reserve(kRayMost + 1);
+    gauge_points_.resize(3 * (3 * kSidePoints + 2));
     fan_.resize(static_cast<std::size_t>(kFanRays) * (kFanSamples + 1));
     reach_.resize(kFanRays);
 }
@@ -132,6 +133,40 @@ void Drawing::draw_chart(const render::Canvas& c, const World& w, const render::
         }
         render::draw_screen_points(c, bc.points.data(), bc.count, render::body_color(b, o),
                                    render::LineStyle{o.antialias, o.line_width});
+    }
+    draw_triangles(c, w, o, m);
+}
+
+// The instruments: each shown triangle's sides (once measured) and its marks, in the constant-K
+// world's instrument colours (the live one's warm, the scene's cool).
+void Drawing::draw_triangles(const render::Canvas& c, const World& w, const render::DrawOptions& o,
+                             const geo::ScreenMap<double>& m) {
+    if (!o.bodies) return;
+    const render::LineStyle line{o.antialias, o.line_width};
+    auto at = [&](Vec2 x) { return geo::spot_at(m, geo::to_sub(m.cx + m.scale * x.x, m.cy - m.scale * x.y)); };
+    for (const World::Gauge& g : w.gauges()) {
+        if (!g.on()) continue;
+        const render::Rgb own = g.live ? render::Rgb{255, 210, 90} : render::Rgb{120, 230, 255};
+        const render::Rgb colour = render::palette_line(o.palette, render::LineRole::instrument, own);
+        if (g.triangle.valid) {
+            render::ClipSink sink(m, gauge_points_.data());
+            geo::Spot prev = at(g.triangle.path[0][0]);
+            sink.start(prev);
+            for (const auto& side : g.triangle.path)
+                for (const Vec2& x : side) {
+                    const geo::Spot s = at(x);
+                    sink.chord(prev, s);
+                    prev = s;
+                }
+            sink.end();
+            render::draw_screen_points(c, gauge_points_.data(), sink.count(), colour, line);
+        }
+        for (int i = 0; i < g.marks; ++i) {  // a mark: a small cross
+            const geo::SubPoint p = at(g.triangle.mark[i]).at;
+            constexpr int32_t r = 3 * geo::kSub;
+            render::draw_line(c, {p.x - r, p.y}, {p.x + r, p.y}, colour, line, true);
+            render::draw_line(c, {p.x, p.y - r}, {p.x, p.y + r}, colour, line, true);
+        }
     }
 }
 

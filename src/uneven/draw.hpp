@@ -13,7 +13,8 @@
 // local polar coordinates (rho, phi), traced by RK4 in steps of kDrawStep world units; an edge's
 // points are those of the geodesic between its two vertices in the world of constant K, in the
 // body's local coordinates, so that with no bumps every edge is the world's geodesic. Points
-// traced along one direction (a grid line's) share their trace.
+// traced along one direction (a grid line's) share their trace. The instruments' triangles
+// (uneven/triangle.hpp) are drawn over the bodies, their sides as the world traced them.
 //
 // What is cached, and recomputed only when the metric changes (a new K or gain) or the canvas
 // does: the backdrop with the colour field, in the chart; the inhabitant's view's table of
@@ -74,6 +75,7 @@ private:
     void draw_chart(const render::Canvas& c, const World& w, const render::DrawOptions& o, bool backdrop);
     void chart_backdrop(const render::Canvas& c, const World& w, const render::DrawOptions& o);
     void body_outline(const World& w, std::size_t i, const geo::ScreenMap<double>& m);
+    void draw_triangles(const render::Canvas& c, const World& w, const render::DrawOptions& o, const geo::ScreenMap<double>& m);
     Vec2 trace(const Metric& metric, Vec2 from, double dir, double rho);
     void build_fan(const World& w);
     void build_table(const World& w, int width, int height);
@@ -81,6 +83,7 @@ private:
     void warp(const render::Canvas& c, render::Rgb outside);
 
     std::vector<BodyCache> bodies_;
+    std::vector<geo::SubPoint> gauge_points_;  // a triangle's sides (draw_triangles)
     std::vector<Geodesic> ray_;  // the trace along one direction (trace()), kDrawStep apart
     double ray_dir_ = 0;
     Vec2 ray_from_;

@@ -4,7 +4,8 @@
 // each body with "center" ([r, theta] of the world of constant K at the world's K), "chart"
 // ([x, y], the state the integrator carries), "heading" (its direction of travel as a chart
 // angle, degrees), "facing", "travel" ([speed, heading]) and "vertices" ([r, theta] each, by the
-// exponential map from its centre), so that anyone's integrator can check the paths.
+// exponential map from its centre), so that anyone's integrator can check the paths; then, as
+// files/dump.hpp, "measure": the triangles' readings (k_area_deg: the integral of K dA).
 #pragma once
 
 #include <string>
@@ -85,7 +86,15 @@ inline void dump_frame(const uneven::World& world, const DumpOptions&, std::stri
         }
         out += "]}";
     }
-    out += "]}\n";
+    out += ']';
+    bool listed = false;
+    for (const auto& g : world.gauges()) {  // (the instruments' readings, as files/dump.hpp)
+        if (!g.on()) continue;
+        out += listed ? "," : ",\"measure\":[";
+        listed = true;
+        append_gauge_json(out, g.reading());
+    }
+    out += listed ? "]}\n" : "}\n";
 }
 
 }  // namespace noneuclid::files

@@ -35,9 +35,69 @@ World::World(const world::Scene& scene) : scene_(scene) {
     for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
     fold();
     game_.setup(*this);
+    for (const world::MeasureDecl& d : scene_.measures) {  // (triangles: the scene file refuses others)
+        Gauge g;
+        g.shown = true;
+        const world::MeasureDecl::Mark fallback[3] = {{1.2, 90}, {1.2, 210}, {1.2, 330}};
+        for (int i = 0; i < 3; ++i) {
+            const world::MeasureDecl::Mark m = d.marks.size() == 3 ? d.marks[i] : fallback[i];
+            g.triangle.mark[i] = chart({m.r, wrap(m.theta_deg * kDegree)});
+        }
+        g.marks = 3;
+        gauges_.push_back(g);
+    }
+    Gauge live;
+    live.live = true;
+    gauges_.push_back(live);
+    read_gauges();
     initial_ = bodies;
     initial_K_ = K;
     initial_game_ = game_;
+}
+
+void World::place_mark(geo::Polar<double> at) {
+    Gauge& g = gauges_.back();
+    if (!g.shown) g.shown = true, g.marks = 0;
+    drop(g, chart(at));
+    read_gauges();
+}
+
+// A mark of the live triangle at chart point x: its first, second or third (then a new one).
+void World::drop(Gauge& g, Vec2 x) {
+    if (g.marks == 3) g.marks = 0;
+    g.triangle.mark[g.marks++] = x;
+    g.version = 0;
+}
+
+// Each shown triangle with its marks, measured again if the metric or its marks changed.
+void World::read_gauges() {
+    constexpr double kDeg = 180 / kPi;
+    for (Gauge& g : gauges_) {
+        if (!g.shown || g.version == version_ + 1) continue;
+        g.version = version_ + 1;
+        world::GaugeReading& r = g.read;
+        r = world::GaugeReading{};
+        r.kind = geo::Instrument::triangle;
+        r.K = K, r.marks = g.marks, r.needed = 3;
+        for (int i = 0; i < g.marks; ++i) r.points[i] = polar(g.triangle.mark[i]);
+        if (g.marks < 3) {
+            r.waiting = true;
+            g.triangle.valid = false;
+            continue;
+        }
+        measure(metric_, g.triangle);
+        const Triangle& t = g.triangle;
+        if (!t.valid) {
+            r.error = geo::MeasureError::collinear;
+            continue;
+        }
+        geo::TriangleReading& tr = r.triangle;
+        for (int i = 0; i < 3; ++i) tr.side[i] = t.side[i], tr.angle_deg[i] = t.angle[i] * kDeg;
+        tr.sum_deg = tr.angle_deg[0] + tr.angle_deg[1] + tr.angle_deg[2];
+        tr.excess_deg = t.excess * kDeg;
+        tr.area = t.area;
+        tr.k_area_deg = t.curvature * kDeg;
+    }
 }
 
 World& World::operator=(const World& o) {
@@ -46,7 +106,7 @@ World& World::operator=(const World& o) {
     K = o.K, R = o.R, time = o.time, frame = o.frame;
     bodies = o.bodies, initial_ = o.initial_, initial_K_ = o.initial_K_;
     metric_ = o.metric_, gain_ = o.gain_, gain_most_ = o.gain_most_, version_ = o.version_, sweep_dir_ = o.sweep_dir_;
-    game_ = o.game_, initial_game_ = o.initial_game_;
+    game_ = o.game_, initial_game_ = o.initial_game_, gauges_ = o.gauges_;
     game_.rebind(scene_.game), initial_game_.rebind(scene_.game);
     for (int i = 0; i < world::kActionCount; ++i) held_[i] = o.held_[i];
     for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
@@ -140,7 +200,20 @@ void World::press(world::Action a) {
         case Action::hyperbolic: set_curvature(-1); break;
         case Action::flat: set_curvature(0); break;
         case Action::spherical: set_curvature(1); break;
-        case Action::fire: game_.press_fire(); break;
+        case Action::fire:
+            if (measuring()) {
+                drop(gauges_.back(), chart(ship_centre()));
+                read_gauges();
+            } else {
+                game_.press_fire();
+            }
+            break;
+        case Action::instrument: {  // the live triangle on (from no marks) or off
+            Gauge& g = gauges_.back();
+            g.shown = !g.shown, g.marks = 0, g.version = 0;
+            read_gauges();
+            break;
+        }
         default: break;
     }
 }
@@ -152,6 +225,13 @@ void World::reset() {
     gain_ = 1;
     sweep_dir_ = 1;
     build_metric();
+    read_gauges();
+}
+
+geo::Polar<double> World::ship_centre() const {
+    for (const Body& b : bodies)
+        if (b.active && b.desc->controlled) return b.centre;
+    return {};
 }
 
 void World::step(double dt) {
@@ -172,12 +252,13 @@ void World::step(double dt) {
     time += dt;
     ++frame;
     const double k = K;
-    game_.step(*this, dt, held(Action::fire));
+    game_.step(*this, dt, held(Action::fire) && !measuring());
     if (K != k) {  // a game's new level sets K
         const double set = K;
         K = k;
         set_curvature(set);
     }
+    read_gauges();
 }
 
 // Steps 1-4 of world.hpp for one body.

@@ -22,8 +22,10 @@
 // Controls: curvature up and down (and the presets, the sweep, keys 1, 2, 3) change K, every body
 // keeping its (r, theta) (a game's level may set K too); strength up and down scale every bump's
 // strength by a gain from 0 to its most (gain_most()); reset restores the scene; fire plays the
-// game, if the scene has one. There are no instruments here yet: the instrument key does
-// nothing. Same actions, same result, bit for bit.
+// game, if the scene has one. The instruments are triangles (uneven/triangle.hpp): the scene's
+// [[measure]] triangles and the live one, which the instrument key turns on and off and fire
+// then marks where the ship is (a fourth mark starts again). Same actions, same result, bit for
+// bit.
 //
 // Memory: the bodies are allocated when the world is built; step() allocates nothing.
 #pragma once
@@ -33,6 +35,7 @@
 
 #include "geometry/geometry.hpp"
 #include "uneven/geodesic.hpp"
+#include "uneven/triangle.hpp"
 #include "world/body.hpp"
 #include "world/game.hpp"
 #include "world/instruments.hpp"
@@ -86,10 +89,24 @@ public:
 
     // The game, if the scene has one (world/game.hpp).
     const world::Game<double>& game() const { return game_; }
-    // What a session asks of every world: no instruments and no zoom here.
-    const std::vector<world::Gauge<double>>& gauges() const { return gauges_; }
-    bool measuring() const { return false; }
-    void place_mark(geo::Polar<double>) {}
+
+    // An instrument: a triangle, its marks and its reading as the panel and the dump take it
+    // (world::GaugeReading's triangle fields; k_area_deg is the integral of K dA).
+    struct Gauge {
+        bool live = false, shown = false;
+        int marks = 0;      // placed (the live one's: at most 3, then a new triangle)
+        Triangle triangle;
+        world::GaugeReading read;
+        uint32_t version = 0;  // the metric's it was measured under, +1 (0: not yet)
+        bool on() const { return shown; }
+        const world::GaugeReading& reading() const { return read; }
+    };
+    // The scene's triangles, then the live one (last).
+    const std::vector<Gauge>& gauges() const { return gauges_; }
+    bool measuring() const { return gauges_.back().shown; }
+    // A mark of the live triangle at `at` (a tap on the web page), turning it on if it is off.
+    void place_mark(geo::Polar<double> at);
+    // What a session asks of every world: no zoom here.
     struct ZoomReading {
         bool on = false;
         double z = 1;
@@ -102,6 +119,9 @@ private:
     void set_gain(double g);
     void build_metric();
     void fold();
+    void drop(Gauge& g, Vec2 x);
+    geo::Polar<double> ship_centre() const;
+    void read_gauges();
     void settle(Body& b) const;
     void step_body(Body& b, double dt, double turn) const;
 
@@ -114,7 +134,7 @@ private:
     std::vector<Body> initial_;
     double initial_K_ = 0;
     world::Game<double> game_, initial_game_;
-    std::vector<world::Gauge<double>> gauges_;
+    std::vector<Gauge> gauges_;
 };
 
 }  // namespace noneuclid::uneven

@@ -87,10 +87,12 @@ bool bump_within_ranges(const SceneBump& b, int index, const Scene& scene, std::
 }
 
 bool uneven_scene_fits(const Scene& scene, std::string& why) {
-    if (!scene.measures.empty()) {
-        why = "a scene with bumps cannot have instruments yet: remove the [[measure]] tables or the bumps";
-        return false;
-    }
+    for (const MeasureDecl& m : scene.measures)
+        if (m.kind != geo::Instrument::triangle) {
+            why = "a scene with bumps measures triangles only (src/uneven): remove the [[measure]] " +
+                  std::string(geo::instrument_name(m.kind)) + ", or the bumps";
+            return false;
+        }
     // The chart has no point at the sphere's antipode: the uneven world's limit circle stops
     // short of it (uneven/world.hpp), at 120 degrees of the sphere.
     const double cut = scene.curvature > 0 ? 2 * 3.14159265358979323846 / 3 / std::sqrt(scene.curvature) : 1e300;

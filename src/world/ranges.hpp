@@ -59,7 +59,7 @@ bool body_within_ranges(const SceneBody& b, double R, std::string& why);
 // Whether bump `index` (from 0) of an uneven world is within the ranges above, the scene's
 // limit radius and the count; false with a sentence in `why` (no full stop) that ends with what
 // to change. And whether an uneven scene's bodies sit where the chart has a point and it asks
-// for nothing the uneven world has not (instruments).
+// for nothing the uneven world has not (an instrument but a triangle).
 bool bump_within_ranges(const SceneBump& b, int index, const Scene& scene, std::string& why);
 bool uneven_scene_fits(const Scene& scene, std::string& why);
 // The most the strength keys' gain may reach: kGain, or where a bump would leave its range.

@@ -200,7 +200,7 @@ TEST(UnevenViews, BumpTablesAndTheirRefusals) {
         {bump + "shape = 1\n", "shape"},
         {"curvature = 1\n[[body]]\nname = \"far\"\nposition = [3, 0]\nvertices = [[0.1, 0]]\n" + bump,
          "body 'far': at r = 3 it lies past 2.094"},
-        {"[[measure]]\ninstrument = \"circle\"\n" + bump, "a scene with bumps cannot have instruments yet"},
+        {"[[measure]]\ninstrument = \"circle\"\n" + bump, "a scene with bumps measures triangles only (src/uneven): remove the [[measure]] circle, or the bumps"},
     };
     for (const auto& b : bad) {
         const std::string said = refused(b.text);
