@@ -96,6 +96,35 @@ void game_fields(const G& g, std::string& out) {
     }
     out += ']';
 }
+// A body's opening fields: {"name":...,"kind":...(,"size":N for a game's asteroid).
+template <class B>
+void body_head(std::string& out, const B& b, int size) {
+    out += "{\"name\":\"";
+    if (b.serial != 0) {
+        serial_name(out, b.desc->kind(), b.serial);
+    } else {
+        for (char c : b.desc->name) {
+            if (c == '"' || c == '\\') out += '\\';
+            if (static_cast<unsigned char>(c) >= 0x20) out += c;
+        }
+    }
+    out += "\",\"kind\":\"";
+    out += world::kind_name(b.desc->kind());
+    out += '"';
+    if (size >= 0) out += ",\"size\":" + std::to_string(size);
+}
+// The line's end: "measure", the readings of every instrument that is on, then the close.
+template <class Gauges>
+void measure_tail(std::string& out, const Gauges& gauges) {
+    bool listed = false;
+    for (const auto& g : gauges) {
+        if (!g.on()) continue;
+        out += listed ? "," : ",\"measure\":[";
+        listed = true;
+        append_gauge_json(out, g.reading());
+    }
+    out += listed ? "]}\n" : "}\n";
+}
 }  // namespace detail
 
 // Appends one frame's line (with its newline) to `out`.
@@ -132,19 +161,7 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
         }
         if (!first) out += ',';
         first = false;
-        out += "{\"name\":\"";
-        if (b.serial != 0) {
-            detail::serial_name(out, b.desc->kind(), b.serial);
-        } else {
-            for (char c : b.desc->name) {
-                if (c == '"' || c == '\\') out += '\\';
-                if (static_cast<unsigned char>(c) >= 0x20) out += c;
-            }
-        }
-        out += "\",\"kind\":\"";
-        out += world::kind_name(b.desc->kind());
-        out += '"';
-        if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
+        detail::body_head(out, b, world.game().size_of(bi));
         out += ",\"center\":";
         detail::polar(out, static_cast<double>(b.centre.r), static_cast<double>(b.centre.theta));
         out += ",\"facing\":";
@@ -189,14 +206,7 @@ void dump_frame(const W& world, const DumpOptions& o, std::string& out) {
         out += "]}";
     }
     out += ']';
-    bool listed = false;
-    for (const auto& g : world.gauges()) {
-        if (!g.on()) continue;
-        out += listed ? "," : ",\"measure\":[";
-        listed = true;
-        append_gauge_json(out, g.reading());
-    }
-    out += listed ? "]}\n" : "}\n";
+    detail::measure_tail(out, world.gauges());
 }
 
 }  // namespace noneuclid::files

@@ -53,20 +53,9 @@ inline void dump_frame(const uneven::World& world, const DumpOptions&, std::stri
     for (std::size_t bi = 0; bi < world.bodies.size(); ++bi) {
         const uneven::Body& b = world.bodies[bi];
         if (!b.active) continue;
-        out += first ? "{\"name\":\"" : ",{\"name\":\"";
+        if (!first) out += ',';
         first = false;
-        if (b.serial != 0) {
-            detail::serial_name(out, b.desc->kind(), b.serial);
-        } else {
-            for (char c : b.desc->name) {
-                if (c == '"' || c == '\\') out += '\\';
-                if (static_cast<unsigned char>(c) >= 0x20) out += c;
-            }
-        }
-        out += "\",\"kind\":\"";
-        out += world::kind_name(b.desc->kind());
-        out += '"';
-        if (const int size = world.game().size_of(bi); size >= 0) out += ",\"size\":" + std::to_string(size);
+        detail::body_head(out, b, world.game().size_of(bi));
         out += ",\"center\":";
         detail::polar(out, b.centre.r, b.centre.theta);
         const uneven::Vec2 x = world.chart(b.centre);
@@ -87,14 +76,7 @@ inline void dump_frame(const uneven::World& world, const DumpOptions&, std::stri
         out += "]}";
     }
     out += ']';
-    bool listed = false;
-    for (const auto& g : world.gauges()) {  // (the instruments' readings, as files/dump.hpp)
-        if (!g.on()) continue;
-        out += listed ? "," : ",\"measure\":[";
-        listed = true;
-        append_gauge_json(out, g.reading());
-    }
-    out += listed ? "]}\n" : "}\n";
+    detail::measure_tail(out, world.gauges());
 }
 
 }  // namespace noneuclid::files
