@@ -39,3 +39,16 @@
 #include "geometry/projection.hpp"
 #include "geometry/scalar.hpp"
 #include "geometry/walk.hpp"
+
+#include <cstddef>
+
+namespace noneuclid::geo {
+// The alignment of what threads write side by side (a body, its shape cache): a cache line of
+// its own, so that two threads never write one line; 8 bytes where the build has no threads
+// (NONEUCLID_NO_THREADS: the firmware, where the padding would cost RAM).
+#ifdef NONEUCLID_NO_THREADS
+inline constexpr std::size_t kThreadAlign = 8;
+#else
+inline constexpr std::size_t kThreadAlign = 64;
+#endif
+}  // namespace noneuclid::geo

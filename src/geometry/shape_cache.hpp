@@ -22,7 +22,7 @@
 namespace noneuclid::geo {
 
 template <class T>
-struct alignas(64) ShapeCache {  // (a cache line of its own: neighbours may be another thread's)
+struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbours may be another thread's)
     using Math = SlerpMath<T>;
     T K{};
     uint32_t shape = 0;  // the body's shape count it was made for (world::Body::shape)

@@ -12,7 +12,7 @@
 namespace noneuclid::world {
 
 template <class T>
-struct alignas(64) Body {
+struct alignas(geo::kThreadAlign) Body {
     geo::Polar<T> centre;
     T facing{}, speed{}, travel{}, accel{}, accel_dir{}, spin{};
     std::vector<geo::Polar<T>> local;  // (rho, phi from the facing), radians

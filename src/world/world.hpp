@@ -95,6 +95,7 @@ public:
         K = T(scene_.curvature);
         R = T(scene_.limit_radius);
         add_gauges();
+        bodies.reserve(scene_.bodies.size());  // (exactly: no room to spare, in RAM that is scarce)
         for (const SceneBody& sb : scene_.bodies) bodies.push_back(make_body(sb));
         // desc pointers refer to scene_ (a copy we own): fix them up after the copy above.
         for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
