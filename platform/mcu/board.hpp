@@ -19,9 +19,9 @@ bool start(Recording& setup);
 // The controls that came in before world time `time` (pressed or released), at most `room`;
 // how many. A recording's are its events due by then; buttons', the changes since the last call.
 int controls(double time, RecordedEvent* out, int room);
-// Frame `frame` is drawn in `pixels` (kWidth x kHeight RGB565, rows kWidth * 2 bytes apart).
-// False stops the firmware (the display failed).
-bool present(const uint16_t* pixels, long frame);
+// Rows [y0, y1) of frame `frame` are drawn in `rows` (RGB565, kWidth a row, row y0 first): a
+// frame comes as bands, top to bottom. False stops the firmware (the display failed).
+bool present(const uint16_t* rows, int y0, int y1, long frame);
 // Whether the firmware stops after `frames` frames (a recording's end) or runs on.
 bool runs_forever();
 // The end: what happened, in one line, and success or failure.

@@ -82,14 +82,18 @@ int controls(double time, RecordedEvent* out, int room) {
     return n;
 }
 
-bool present(const uint16_t* pixels, long frame) {
+// A frame's file is opened with its first band and closed after its last.
+bool present(const uint16_t* rows, int y0, int y1, long frame) {
+    static int h = -1;
     if (g_every == 0 || (frame % g_every != 0 && frame != g_frames)) return true;
-    char path[400];
-    std::snprintf(path, sizeof path, "%s/frame-%06ld.rgb565", g_outdir, frame);
-    const int h = sh::open(path, "wb");
-    if (h < 0) return fail("noneuclid firmware: cannot write a frame into OUTDIR (does it exist?).");
-    const bool ok = sh::write(h, pixels, kWidth * kHeight * 2);
-    sh::close(h);
+    if (y0 == 0) {
+        char path[400];
+        std::snprintf(path, sizeof path, "%s/frame-%06ld.rgb565", g_outdir, frame);
+        h = sh::open(path, "wb");
+        if (h < 0) return fail("noneuclid firmware: cannot write a frame into OUTDIR (does it exist?).");
+    }
+    const bool ok = sh::write(h, rows, static_cast<std::size_t>(kWidth) * 2 * static_cast<std::size_t>(y1 - y0));
+    if (y1 == kHeight || !ok) sh::close(h), h = -1;
     return ok;
 }
 

@@ -39,8 +39,8 @@ int controls(double, RecordedEvent* out, int room) {
     return n;
 }
 
-bool present(const uint16_t* pixels, long) {
-    g_display.draw(pixels);
+bool present(const uint16_t* rows, int y0, int y1, long) {
+    g_display.draw(rows, y0, y1);
     return true;
 }
 

@@ -27,8 +27,11 @@ using World = world::World<fx::fixed>;
 using Scratch = render::DrawScratch<World::scalar, World::engine>;
 constexpr double kDt = 1.0 / 60;  // world seconds a step: the program's
 
-// The picture: static, so that it is counted in the firmware's RAM, never on the heap.
-alignas(4) uint16_t g_pixels[board::kWidth * board::kHeight];
+// The picture, drawn a band of rows at a time (Canvas::band), each band presented when drawn:
+// RAM holds half a frame. Static, so that it is counted in the firmware's RAM, never on the heap.
+constexpr int kBands = 2, kBandRows = board::kHeight / kBands;
+static_assert(kBandRows * kBands == board::kHeight);
+alignas(4) uint16_t g_pixels[board::kWidth * kBandRows];
 
 // The view: the drawing options and the HUD, which the projection and hud controls change.
 struct View {
@@ -136,15 +139,19 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     World& w = *made;
     static Scratch scratch;
     scratch.prepare(w);
+    scratch.backdrop.reserve(board::kHeight);  // (the backdrop's rows kept: the same every frame)
     View o{draw_options(setup), setup.hud, setup.best};
-    const render::Canvas canvas(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2, render::PixelFormat::rgb565());
     const std::size_t allocations = heap_allocations();
 
     play_due(w, o);
     for (long f = 0;; ++f) {
-        render::draw_world(canvas, w, o.draw, scratch);
-        if (o.hud) draw_hud(canvas, w, o, setup.scene);
-        if (!board::present(g_pixels, f)) board::finish(false, "noneuclid firmware: the display failed.");
+        for (int y0 = 0; y0 < board::kHeight; y0 += kBandRows) {  // (each band: what the whole frame has there)
+            const auto canvas = render::Canvas::band(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2,
+                                                     render::PixelFormat::rgb565(), y0, y0 + kBandRows);
+            render::draw_world(canvas, w, o.draw, scratch);
+            if (o.hud) draw_hud(canvas, w, o, setup.scene);
+            if (!board::present(g_pixels, y0, y0 + kBandRows, f)) board::finish(false, "noneuclid firmware: the display failed.");
+        }
         if (f == setup.frames && !board::runs_forever()) break;
         w.step(kDt);
         game_events(w, o);

@@ -68,23 +68,25 @@ void St7789::start() {
     hal::pin_write(pins_.backlight, true);
 }
 
-void St7789::draw(const uint16_t* pixels) {
-    window(0, 0, kWidth - 1, kHeight - 1);
-    const uint8_t c = ramwr;
-    hal::pin_write(pins_.cs, false);
-    hal::pin_write(pins_.dc, false);
-    hal::spi_write(&c, 1);
-    hal::pin_write(pins_.dc, true);
+void St7789::draw(const uint16_t* rows, int y0, int y1) {
+    if (y0 == 0) {
+        window(0, 0, kWidth - 1, kHeight - 1);
+        const uint8_t c = ramwr;
+        hal::pin_write(pins_.cs, false);
+        hal::pin_write(pins_.dc, false);
+        hal::spi_write(&c, 1);
+        hal::pin_write(pins_.dc, true);
+    }
     static uint8_t row[kWidth * 2];  // one row, high bytes first (static: off the small stack)
-    for (int y = 0; y < kHeight; ++y) {
-        const uint16_t* from = pixels + y * kWidth;
+    for (int y = y0; y < y1; ++y) {
+        const uint16_t* from = rows + (y - y0) * kWidth;
         for (int x = 0; x < kWidth; ++x) {
             row[2 * x] = static_cast<uint8_t>(from[x] >> 8);
             row[2 * x + 1] = static_cast<uint8_t>(from[x]);
         }
         hal::spi_write(row, sizeof row);
     }
-    hal::pin_write(pins_.cs, true);
+    if (y1 == kHeight) hal::pin_write(pins_.cs, true);
 }
 
 }  // namespace noneuclid::mcu

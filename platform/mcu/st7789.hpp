@@ -1,6 +1,6 @@
 // A driver for the ST7789 display controller on a 240x240 RGB565 panel (the common 1.3" IPS
 // modules), over the HAL's SPI and pins (hal.hpp): reset, wake and set the pixel format once
-// (start), then whole frames (draw). Write-only: the panel is never read, so MISO is not used.
+// (start), then frames (draw), a band of rows at a time. Write-only: the panel is never read, so MISO is not used.
 //
 // The wire: a command byte with D/C low, its parameters with D/C high, chip select low around
 // each. The frame goes as RAMWR after the address window (CASET, RASET) covering the panel;
@@ -27,9 +27,11 @@ public:
     // The controller reset and set up: awake, 16 bits a pixel (RGB565), rows top to bottom,
     // colours inverted as these IPS panels need, display and backlight on. About 300 ms.
     void start();
-    // One frame: kWidth x kHeight RGB565 pixels as the canvas holds them (little-endian words,
-    // rows `kWidth` pixels apart).
-    void draw(const uint16_t* pixels);
+    // Rows [y0, y1) of a frame: RGB565 pixels as the canvas holds them (little-endian words,
+    // rows `kWidth` pixels apart, row y0 first). A frame's bands come top to bottom: the first
+    // (y0 0) opens the window and RAMWR, the last (y1 kHeight) ends it; between them the panel
+    // waits, chip select low, for the next band's pixels.
+    void draw(const uint16_t* rows, int y0, int y1);
 
 private:
     void command(uint8_t c, const uint8_t* params = nullptr, int count = 0);

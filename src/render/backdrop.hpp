@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 #include "render/canvas.hpp"
 #include "render/draw_options.hpp"
@@ -25,12 +26,46 @@ LimitCircle limit_circle(const ScreenMap<T>& m) {
     return {static_cast<double>(m.cx), static_cast<double>(m.cy), m.rim};
 }
 
-// Rows [y0, y1) of the backdrop (clamped to the canvas). backdrop.cpp.
-void draw_backdrop_rows(const Canvas& c, const LimitCircle& circle, const DrawOptions& o, int y0, int y1);
+// The columns of one row of the backdrop: those inside the circle (`in`, the background's when
+// the outside is shaded), and the circle's line between the circles `outer` and `inner` (of
+// radius r +- half the line's width, or +- half + 1/2 anti-aliased: the pixels it blends);
+// outer is empty where the row misses the line or there is none. 16 bits a column.
+struct BackdropRow {
+    struct Span {
+        int16_t first, last;
+    };
+    Span in, outer, inner;
+};
+
+// Every row's BackdropRow, kept while the circle, the options and the canvas's size stay the
+// same (they do from frame to frame): each row's columns take square roots and roundings in
+// double, which on a core without a floating-point unit cost as much as drawing the frame's
+// lines (docs/microcontroller.md). Used only where reserve() made room for the canvas's rows, so
+// that drawing never allocates; otherwise the rows are computed as they are drawn. backdrop.cpp.
+class BackdropRows {
+public:
+    void reserve(int rows) { rows_.reserve(static_cast<std::size_t>(rows)); }
+    // The rows for this frame, computed when anything they depend on changed; nullptr when the
+    // room reserved is too small (or the canvas too wide for 16 bits).
+    const BackdropRow* rows(const Canvas& c, const LimitCircle& circle, const DrawOptions& o);
+
+private:
+    std::vector<BackdropRow> rows_;
+    LimitCircle circle_;
+    int32_t line_width_ = 0;
+    int width_ = 0;
+    bool antialias_ = false, shade_outside_ = false, rim_line_ = false;
+};
+
+// Rows [y0, y1) of the backdrop (clamped to the canvas); `rows`, if given, the canvas's every
+// row's columns (BackdropRows). backdrop.cpp.
+void draw_backdrop_rows(const Canvas& c, const LimitCircle& circle, const DrawOptions& o, int y0, int y1,
+                        const BackdropRow* rows = nullptr);
 
 template <class T>
-void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, const DrawOptions& o) {
-    draw_backdrop_rows(c, limit_circle(m), o, 0, c.height());
+void draw_backdrop(const Canvas& c, const ScreenMap<T>& m, const DrawOptions& o, BackdropRows* kept = nullptr) {
+    const LimitCircle circle = limit_circle(m);
+    draw_backdrop_rows(c, circle, o, c.top(), c.bottom(), kept ? kept->rows(c, circle, o) : nullptr);
 }
 
 namespace detail {

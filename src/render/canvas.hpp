@@ -107,7 +107,21 @@ public:
     Canvas() = default;
     // `pixels` points at the first byte of row 0, column 0 (fbdev: add xoffset/yoffset first).
     Canvas(void* pixels, int width, int height, std::ptrdiff_t stride, PixelFormat format)
-        : base_(static_cast<uint8_t*>(pixels)), width_(width), height_(height), stride_(stride), format_(format) {}
+        : base_(static_cast<uint8_t*>(pixels)), width_(width), height_(height), stride_(stride), format_(format),
+          bottom_(height) {}
+    // A band of a picture: its rows [top, bottom) held at `pixels` (the band's first row), the
+    // picture width x height, for a frame drawn a band at a time where RAM holds no whole frame
+    // (the firmware). Only the band's rows may be written: draw_world keeps to them, as do the
+    // HUD's text and clear(); other writers (draw_polyline without a RowRange) do not.
+    static Canvas band(void* pixels, int width, int height, std::ptrdiff_t stride, PixelFormat format, int top,
+                       int bottom) {
+        Canvas c(pixels, width, height, stride, format);
+        // (where row 0 would be, an address never read or written: computed as an integer)
+        c.base_ = reinterpret_cast<uint8_t*>(reinterpret_cast<std::uintptr_t>(pixels) -
+                                             static_cast<std::uintptr_t>(static_cast<std::ptrdiff_t>(top) * stride));
+        c.top_ = top, c.bottom_ = bottom;
+        return c;
+    }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -115,6 +129,10 @@ public:
     const PixelFormat& format() const { return format_; }
     uint8_t* row(int y) const { return base_ + y * stride_; }
     bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }
+    // The rows held, [top, bottom): all of them but in a band.
+    int top() const { return top_; }
+    int bottom() const { return bottom_; }
+    bool whole() const { return top_ <= 0 && bottom_ >= height_; }
 
     // Raw word access; the caller guarantees 0 <= x < width, 0 <= y < height.
     uint32_t get_word(int x, int y) const {
@@ -148,7 +166,7 @@ public:
 
     void clear(Rgb c) const {
         const uint32_t w = format_.pack(c);
-        for (int y = 0; y < height_; ++y)
+        for (int y = top_; y < height_ && y < bottom_; ++y)
             for (int x = 0; x < width_; ++x) set_word(x, y, w);
     }
 
@@ -157,6 +175,7 @@ private:
     int width_ = 0, height_ = 0;
     std::ptrdiff_t stride_ = 0;
     PixelFormat format_ = PixelFormat::xrgb8888();
+    int top_ = 0, bottom_ = 0;
 };
 
 }  // namespace noneuclid::render

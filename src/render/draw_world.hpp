@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "geometry/geometry.hpp"
@@ -40,6 +41,14 @@ struct DrawScratch {
     std::vector<geo::Vec3<T>> vectors;
     std::vector<typename E::Cache> shapes;  // world.bodies[i]'s is shapes[i]
     FillScratch<T> fill;                  // filled and textured bodies (render/fill.hpp)
+    // The backdrop's rows, kept from frame to frame where reserved for the canvas's height (the
+    // firmware does: render/backdrop.hpp); otherwise computed as drawn.
+    BackdropRows backdrop;
+    // A frame drawn in bands (Canvas::band): each body's lowest reach (its points' largest y
+    // and the lines' row margin, 1/256 px; INT32_MAX with a fill) found in the band at row 0 of
+    // the world's frame `banded`, so that the later bands skip the bodies that end above them.
+    std::vector<int32_t> lowest;
+    long banded = -1;
     template <class W>
     void prepare(const W& world) {
         std::size_t most = 1, most_v = 1;
@@ -52,31 +61,54 @@ struct DrawScratch {
         vectors.resize(most_v);
         make_shape_caches(world, shapes);
         fill.prepare(world, 1);
+        lowest.assign(world.bodies.size(), INT32_MAX);
+        banded = -1;
     }
 };
 
-// World.bodies[i]: its fill, then its outline.
+// The largest y of the points (breaks left out) plus `margin`, 1/256 px; INT32_MIN for none.
+inline int32_t lowest_reach(const SubPoint* p, std::size_t count, int32_t margin) {
+    int32_t low = INT32_MIN;
+    for (std::size_t k = 0; k < count; ++k)
+        if (!(p[k].x == kBreak.x && p[k].y == kBreak.y) && p[k].y > low) low = p[k].y;
+    return low == INT32_MIN ? low : low + margin;  // (y is at most to_sub's 2^30: no overflow)
+}
+
+// World.bodies[i]: its fill, then its outline; its lowest reach into `lowest` if given.
 template <class W>
 void draw_body(const Canvas& c, const W& world, std::size_t i, const ScreenMap<typename W::scalar>& m, const DrawOptions& o,
-               DrawScratch<typename W::scalar, typename W::engine>& s) {
+               DrawScratch<typename W::scalar, typename W::engine>& s, int32_t* lowest = nullptr) {
     const auto& b = world.bodies[i];
-    if (const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height())) fill_rows(c, *j, 0, c.height(), s.fill.work[0]);
+    const FillJob* j = s.fill.plan(world, i, m, o, c.width(), c.height());
+    if (j) fill_rows(c, *j, c.top(), std::min(c.bottom(), c.height()), s.fill.work[0]);
     const std::size_t count =
         body_screen_points(world, b, s.shapes[i], m, o, s.vertices.data(), s.vectors.data(), s.points.data());
-    draw_screen_points(c, s.points.data(), count, body_color(b, o), LineStyle{o.antialias, o.line_width});
+    const LineStyle line{o.antialias, o.line_width};
+    draw_screen_points(c, s.points.data(), count, body_color(b, o), line, held_rows(c));
+    if (lowest) *lowest = j ? INT32_MAX : lowest_reach(s.points.data(), count, row_margin(line));
 }
 
 // The whole frame: the backdrop (left out when `backdrop` is false: the bodies are drawn over
-// what the canvas holds), then every body the options show.
+// what the canvas holds), then every body the options show. In a band of the frame
+// (Canvas::band) its rows alone, exactly as the whole frame has them: a frame's bands drawn top
+// to bottom, the first at row 0, the world not changed between them (the later bands leave out
+// the bodies the first found to end above them).
 template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar, typename W::engine>& s,
                 bool backdrop = true) {
     using T = typename W::scalar;
     const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
-    if (backdrop) draw_backdrop(c, m, o);
+    if (backdrop) draw_backdrop(c, m, o, &s.backdrop);
     s.fill.begin_frame(c);
-    for (std::size_t i = 0; i < world.bodies.size(); ++i)
-        if (body_shown(world.bodies[i], o)) draw_body(c, world, i, m, o, s);
+    // In bands, top to bottom: the first finds the bodies' reach, the later ones skip by it.
+    const bool first = !c.whole() && c.top() <= 0 && s.lowest.size() == world.bodies.size();
+    const bool later = !c.whole() && c.top() > 0 && s.banded == world.frame;
+    const int32_t above = later ? c.top() * kSub : INT32_MIN;  // (a band's top row: far below 2^23)
+    for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+        if (!body_shown(world.bodies[i], o) || (later && s.lowest[i] < above)) continue;
+        draw_body(c, world, i, m, o, s, first ? &s.lowest[i] : nullptr);
+    }
+    if (first) s.banded = world.frame;
 }
 
 }  // namespace noneuclid::render

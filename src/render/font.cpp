@@ -82,11 +82,12 @@ constexpr int64_t kOffsetCap = int64_t{1} << 40;
 
 void draw_glyph(const Canvas& canvas, const Font& font, int glyph, int64_t left, int64_t top,
                 int64_t scale, uint32_t word) {
-    const int64_t w = canvas.width(), h = canvas.height();
-    if (left >= w || top >= h || left + font.width * scale <= 0 || top + font.height * scale <= 0)
+    // (the rows the canvas holds: all of them, but in a band of a frame)
+    const int64_t w = canvas.width(), h = std::min(canvas.height(), canvas.bottom()), t = canvas.top();
+    if (left >= w || top >= h || left + font.width * scale <= 0 || top + font.height * scale <= t)
         return;
     for (int gy = 0; gy < font.height; ++gy) {
-        const int64_t y0 = std::max<int64_t>(top + gy * scale, 0);
+        const int64_t y0 = std::max<int64_t>(top + gy * scale, t);
         const int64_t y1 = std::min<int64_t>(top + (gy + 1) * scale, h);
         if (y0 >= y1)
             continue;

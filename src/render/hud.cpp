@@ -21,7 +21,7 @@ void centred(const Canvas& c, const Font& font, int x, int y, const char* text, 
 // A life: a little ship, its nose up, `size` pixels tall, top-left at (x, y).
 void life(const Canvas& c, int x, int y, int size, Rgb color) {
     const SubPoint p[3] = {to_sub(x + size * 0.35, y), to_sub(x + size * 0.7, y + size), to_sub(x, y + size)};
-    draw_polyline(c, p, 3, true, color);
+    draw_polyline(c, p, 3, true, color, {}, held_rows(c));
 }
 
 // The game's corner (score, level, lives) and its screen in the middle.

@@ -58,6 +58,8 @@ struct LineStyle {
 struct RowRange {
     int y0 = 0, y1 = INT_MAX;
 };
+// The rows a canvas holds (Canvas::band): every row (the faster paths) for a whole canvas.
+inline RowRange held_rows(const Canvas& c) { return c.whole() ? RowRange{} : RowRange{c.top(), c.bottom()}; }
 
 // Every pixel a line (or polyline) writes lies in the rows its points span widened by this, in
 // 1/256 px: row y is written only if some point's y (1/256 px) is >= y * 256 - row_margin and

@@ -1,8 +1,9 @@
 // The rasteriser's and the backdrop's fast paths write what the plain loops write, bit for
 // bit: draw_polyline (32-bit loops, byte offsets, skipped checks) against the generic 64-bit
 // loop behind visit_polyline; the backdrop as spans against Canvas::clear +
-// shade_outside_circle, and its limit circle line against the band around the circle;
-// fill_span against the pixels one by one.
+// shade_outside_circle, and its limit circle line against the band around the circle; its
+// rows kept from frame to frame against its rows computed as drawn; fill_span against the
+// pixels one by one.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -84,6 +85,40 @@ TEST(FastPaths, TheLimitCircleLineIsTheBandAroundTheCircle) {
                 for (int y0 = 0; y0 < h; y0 += 7) render::draw_backdrop_rows(cb, render::limit_circle(m), o, y0, y0 + 7);
                 ASSERT_EQ(px, bands) << w << "x" << h;
             }
+}
+
+// The backdrop's rows kept (BackdropRows, reserved for the canvas's height, as the firmware
+// does) draw what the rows computed as drawn do, and are computed again when the circle, the
+// options or the canvas change between frames; with too little room reserved they are not used.
+TEST(FastPaths, KeptBackdropRowsDrawTheSamePixels) {
+    const render::PixelFormat f = render::PixelFormat::rgb565();
+    render::BackdropRows kept;
+    kept.reserve(480);
+    int frames = 0;
+    for (auto [w, h] : {std::pair{240, 240}, std::pair{101, 40}, std::pair{480, 480}, std::pair{240, 240}})
+        for (double R : {kPi, 0.3})
+            for (int32_t width : {256, 640})
+                for (bool aa : {false, true})
+                    for (bool shade : {true, false})
+                        for (bool rim : {true, false}) {
+                            std::vector<uint16_t> x(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 1), y = x;
+                            const render::Canvas cx(x.data(), w, h, static_cast<std::ptrdiff_t>(w) * 2, f);
+                            const render::Canvas cy(y.data(), w, h, static_cast<std::ptrdiff_t>(w) * 2, f);
+                            render::DrawOptions o;
+                            o.antialias = aa, o.line_width = width, o.shade_outside = shade, o.rim_line = rim;
+                            const auto m = render::ScreenMap<double>::of(cx, 0.0, R, o.projection);
+                            render::draw_backdrop(cx, m, o);
+                            ASSERT_NE(kept.rows(cy, render::limit_circle(m), o), nullptr);
+                            render::draw_backdrop(cy, m, o, &kept);
+                            ASSERT_EQ(x, y) << w << "x" << h << " R " << R << " width " << width << " aa " << aa;
+                            ++frames;
+                        }
+    EXPECT_EQ(frames, 128);
+    render::BackdropRows small;
+    small.reserve(100);
+    std::vector<uint16_t> px(240 * 240);
+    const render::Canvas c(px.data(), 240, 240, 480, f);
+    EXPECT_EQ(small.rows(c, render::LimitCircle{120, 120, 120}, render::DrawOptions{}), nullptr);
 }
 
 // What draw_polyline writes, built from visit_polyline's pixels: the generic 64-bit loop (no
