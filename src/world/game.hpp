@@ -88,6 +88,17 @@ public:
         spawn_level(w, false);
     }
 
+    // The game as a new one set up (setup): every field as a new Game's, its slots' room kept
+    // (nothing allocated), then set up. The world's reset.
+    template <class W>
+    void restart(W& w) {
+        std::vector<Slot> a = std::move(asteroids_), b = std::move(bullets_);
+        *this = Game{};
+        asteroids_ = std::move(a), bullets_ = std::move(b);
+        asteroids_.clear(), bullets_.clear();
+        setup(w);
+    }
+
     // After the world holding the game was copied: its settings are the copy's.
     void rebind(const GameSettings& g) { settings_ = &g; }
 

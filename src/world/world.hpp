@@ -92,21 +92,11 @@ public:
     using engine = E;
 
     explicit World(const Scene& scene) : scene_(scene) {
-        K = T(scene_.curvature);
         R = T(scene_.limit_radius);
         add_gauges();
-        bodies.reserve(scene_.bodies.size());  // (exactly: no room to spare, in RAM that is scarce)
-        for (const SceneBody& sb : scene_.bodies) bodies.push_back(make_body(sb));
-        // desc pointers refer to scene_ (a copy we own): fix them up after the copy above.
-        for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
-        game_.setup(*this);
+        bodies.resize(scene_.bodies.size());  // (exactly: no room to spare, in RAM that is scarce)
+        start();
         update_gauges();
-        zoom_ = scene_.zoom.start;
-        show_zoom();
-        initial_level_ = shown_level_, initial_zoom_ = shown_zoom_;
-        initial_ = bodies;
-        initial_K_ = K;
-        initial_game_ = game_;
     }
     World(const World& o) : scene_(o.scene_) { copy_from(o); }
     World& operator=(const World& o) {
@@ -194,11 +184,7 @@ public:
         K = T(p.front());
     }
     void reset() {
-        bodies = initial_;
-        K = initial_K_;
-        zoom_ = scene_.zoom.start;
-        shown_level_ = initial_level_, shown_zoom_ = initial_zoom_;
-        game_ = initial_game_;
+        start();
         sweep_dir_ = 1;
         for (Gauge<T>& g : gauges_) g.touch();
         update_gauges();
@@ -228,6 +214,26 @@ private:
         T top{};  // its top speed (the game's; the world's ceiling otherwise)
         bool thrusting = false;
     };
+    // The start: K, the bodies, the game and the zoom as the scene gives them, made in place (no
+    // copy of them is kept for the reset: RAM is scarce on a microcontroller; the vertex lists
+    // keep their sizes, so a reset allocates nothing). The game's setup reads the clock and the
+    // step count, both 0 at the start. The live instrument's parts are left to the next
+    // update_gauges (it was off at the start: it only hides them); the scene's instruments are
+    // placed as at the start, so that their shape counts follow the same course.
+    void start() {
+        K = T(scene_.curvature);
+        for (std::size_t i = 0; i < bodies.size(); ++i) init_body(bodies[i], scene_.bodies[i]);
+        const double now = time;
+        const long steps = frame;
+        time = 0, frame = 0;
+        game_.restart(*this);
+        time = now, frame = steps;
+        for (Gauge<T>& g : gauges_)
+            if (!g.live()) g.touch(), g.update(K, R, bodies);
+        zoom_ = scene_.zoom.start;
+        shown_level_ = -1, shown_zoom_ = 0;
+        show_zoom();
+    }
     // One body's step (steps 1-4 above): reads K, R and the body, writes only the body.
     void step_body(Body<T>& b, const geo::Tick<T>& dt, const Steering& steer) const {
         using geo::dot2, geo::hypot, geo::wrap_pi;  // and fx:: ones by ADL for fixed
@@ -309,8 +315,15 @@ private:
         }
         shown_level_ = pick, shown_zoom_ = zoom_;
     }
-    Body<T> make_body(const SceneBody& sb) const {
-        Body<T> b;
+    // Body b as the scene body describes it, every other field as a new Body's; its vertex list's
+    // room reused.
+    void init_body(Body<T>& b, const SceneBody& sb) const {
+        std::vector<Polar<T>> local = std::move(b.local);
+        b = Body<T>{};
+        local.resize(sb.vertices.size());
+        for (std::size_t i = 0; i < local.size(); ++i) local[i] = {T(sb.vertices[i].rho), T(sb.vertices[i].phi_deg * kDegree)};
+        b.local = std::move(local);
+        b.desc = &sb;
         b.centre = {T(sb.r), geo::wrap_pi(T(sb.theta_deg * kDegree))};
         b.facing = geo::wrap_pi(T(sb.facing_deg * kDegree));
         b.speed = T(sb.speed);
@@ -318,38 +331,30 @@ private:
         b.accel = T(sb.accel);
         b.accel_dir = geo::wrap_pi(T(sb.accel_direction_deg * kDegree));
         b.spin = T(sb.spin_deg * kDegree);
-        for (const SceneBody::Vertex& v : sb.vertices) b.local.push_back({T(v.rho), T(v.phi_deg * kDegree)});
-        return b;
     }
     void copy_from(const World& o) {
         K = o.K, R = o.R, time = o.time, frame = o.frame;
-        zoom_ = o.zoom_, shown_zoom_ = o.shown_zoom_, initial_zoom_ = o.initial_zoom_;
-        shown_level_ = o.shown_level_, initial_level_ = o.initial_level_;
+        zoom_ = o.zoom_, shown_zoom_ = o.shown_zoom_;
+        shown_level_ = o.shown_level_;
         bodies = o.bodies;
-        initial_ = o.initial_;
-        initial_K_ = o.initial_K_;
-        game_ = o.game_, initial_game_ = o.initial_game_;
-        game_.rebind(scene_.game), initial_game_.rebind(scene_.game);
+        game_ = o.game_;
+        game_.rebind(scene_.game);
         sweep_dir_ = o.sweep_dir_;
         gauges_ = o.gauges_;
         for (std::size_t i = 0; i < gauges_.size(); ++i) gauges_[i].rebind(i < scene_.measures.size() ? scene_.measures[i] : live_decl_);
         for (int i = 0; i < kActionCount; ++i) held_[i] = o.held_[i];
-        for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = initial_[i].desc = &scene_.bodies[i];
+        for (std::size_t i = 0; i < bodies.size(); ++i) bodies[i].desc = &scene_.bodies[i];
     }
 
     Scene scene_;
     MeasureDecl live_decl_;  // the live instrument's construction (the defaults)
     std::vector<Gauge<T>> gauges_;
-    std::vector<Body<T>> initial_;
-    T initial_K_{};
-    Game<T> game_, initial_game_;
+    Game<T> game_;
     int sweep_dir_ = 1;
     bool held_[kActionCount] = {};
     double zoom_ = 1;                 // z (Scene::zoom)
     int shown_level_ = -1;            // the level shown, and the z its vertices were scaled to
     double shown_zoom_ = 0;
-    int initial_level_ = -1;          // the same at the start (reset)
-    double initial_zoom_ = 0;
 };
 
 }  // namespace noneuclid::world
