@@ -9,7 +9,6 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 #include "files/text_file.hpp"
@@ -27,9 +26,19 @@ struct PngMessages {
 }
 void png_warned(png_structp, png_const_charp) {}
 
-// The canvas's rows, top to bottom; false if a stop signal came first. A function of its own so
-// that no local of write_png changes after its setjmp (g++ -O2 warns of those: -Wclobbered).
-bool write_rows(png_structp png, const render::Canvas& canvas, std::vector<png_byte>& row) {
+// Every libpng call that can fail sits in one of the three *_guarded functions: each holds its
+// own setjmp, returns when libpng longjmps to it, and builds no std::string (GCC's -Wclobbered
+// flags libstdc++'s string internals inlined into a function that calls setjmp); the callers
+// make the sentences.
+enum class Png { done, failed, stopped };
+
+// The canvas's rows, top to bottom; stopped if a stop signal came first.
+Png encode_guarded(png_structp png, png_infop info, std::FILE* file, const render::Canvas& canvas, png_byte* row) {
+    if (setjmp(png_jmpbuf(png))) return Png::failed;
+    png_init_io(png, file);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(canvas.width()), static_cast<png_uint_32>(canvas.height()), 8,
+                 PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
     for (int y = 0; y < canvas.height(); ++y) {
         for (int x = 0; x < canvas.width(); ++x) {
             const render::Rgb c = canvas.get(x, y);
@@ -37,10 +46,44 @@ bool write_rows(png_structp png, const render::Canvas& canvas, std::vector<png_b
             row[static_cast<std::size_t>(x) * 3 + 1] = c.g;
             row[static_cast<std::size_t>(x) * 3 + 2] = c.b;
         }
-        png_write_row(png, row.data());
-        if (stop_signal() != 0) return false;
+        png_write_row(png, row);
+        if (stop_signal() != 0) return Png::stopped;
     }
-    return true;
+    png_write_end(png, nullptr);
+    return Png::done;
+}
+
+// The header, with every image converted to 8-bit RGB rows: their width and height.
+Png read_header_guarded(png_structp png, png_infop info, std::size_t& width, std::size_t& height) {
+    if (setjmp(png_jmpbuf(png))) return Png::failed;
+    png_read_info(png, info);
+    png_set_expand(png);  // palette and grey below 8 bits to 8-bit RGB or grey
+    png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    png_set_gray_to_rgb(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    width = png_get_image_width(png, info), height = png_get_image_height(png, info);
+    if (png_get_rowbytes(png, info) != width * 3) png_error(png, "not 8-bit RGB after conversion");
+    return Png::done;
+}
+
+// The rows, into the caller's memory.
+Png read_rows_guarded(png_structp png, png_bytep* rows) {
+    if (setjmp(png_jmpbuf(png))) return Png::failed;
+    png_read_image(png, rows);
+    png_read_end(png, nullptr);
+    return Png::done;
+}
+
+// The header and the rows into rgb (width x height x 3 bytes); false if libpng failed.
+template <class Buffer>
+bool read_guarded(png_structp png, png_infop info, std::size_t& width, std::size_t& height, Buffer& rgb) {
+    if (read_header_guarded(png, info, width, height) != Png::done) return false;
+    rgb.assign(width * height * 3, 0);
+    std::vector<png_bytep> rows(height);
+    for (std::size_t y = 0; y < height; ++y) rows[y] = reinterpret_cast<png_bytep>(&rgb[y * width * 3]);
+    return read_rows_guarded(png, rows.data()) == Png::done;
 }
 }  // namespace
 
@@ -56,27 +99,21 @@ bool write_png(const std::string& path, const render::Canvas& canvas, std::strin
         return false;
     }
     std::vector<png_byte> row(static_cast<std::size_t>(canvas.width()) * 3);
-    if (setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        const int err = errno;
+    const Png result = encode_guarded(png, info, out.file(), canvas, row.data());
+    const int err = errno;
+    png_destroy_write_struct(&png, &info);
+    if (result == Png::failed) {
         error = "cannot write " + path + ": " +
                 (std::ferror(out.file()) ? std::string(std::strerror(err)) + " (check the disk has room)"
                                          : "libpng: " + messages.text) +
                 "; it is left as it was.";
         return false;  // out's destructor removes the temporary file
     }
-    png_init_io(png, out.file());
-    png_set_IHDR(png, info, static_cast<png_uint_32>(canvas.width()), static_cast<png_uint_32>(canvas.height()), 8,
-                 PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    if (!write_rows(png, canvas, row)) {
-        png_destroy_write_struct(&png, &info);
+    if (result == Png::stopped) {
         error = "stopped by signal " + std::to_string(stop_signal()) + " while writing " + path +
                 "; it is left as it was.";
         return false;
     }
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
     return out.commit(error);
 }
 
@@ -89,30 +126,20 @@ bool read_png(const std::string& path, int& width, int& height, std::string& rgb
     PngMessages messages;
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &messages, png_failed, png_warned);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
-        png_destroy_read_struct(&png, &info, nullptr);
-        std::fclose(f);
+    std::size_t w = 0, h = 0;
+    bool read = false;
+    if (png && info) {
+        png_init_io(png, f);
+        read = read_guarded(png, info, w, h, rgb);
+    }
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(f);
+    if (!read) {
         error = "cannot read " + path + ": not a PNG file libpng can read" +
                 (messages.text.empty() ? std::string() : " (" + messages.text + ")");
         return false;
     }
-    png_init_io(png, f);
-    png_read_info(png, info);
-    png_set_expand(png);
-    png_set_strip_16(png);
-    png_set_strip_alpha(png);
-    png_set_gray_to_rgb(png);
-    png_read_update_info(png, info);
-    width = static_cast<int>(png_get_image_width(png, info));
-    height = static_cast<int>(png_get_image_height(png, info));
-    rgb.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, '\0');
-    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y)
-        rows[static_cast<std::size_t>(y)] = reinterpret_cast<png_bytep>(&rgb[static_cast<std::size_t>(y) * static_cast<std::size_t>(width) * 3]);
-    png_read_image(png, rows.data());
-    png_read_end(png, nullptr);
-    png_destroy_read_struct(&png, &info, nullptr);
-    std::fclose(f);
+    width = static_cast<int>(w), height = static_cast<int>(h);
     return true;
 }
 
@@ -234,44 +261,28 @@ bool read_texture(const std::string& path, world::Image& out, std::string& why) 
     PngMessages messages;
     png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &messages, png_failed, png_warned);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
-    // What the decoder writes, reached through a pointer that does not change after setjmp (a
-    // local changed between setjmp and longjmp would be indeterminate after it).
-    struct Decoded {
-        std::vector<png_byte> rgb;
-        std::vector<png_bytep> rows;
-    };
-    const std::unique_ptr<Decoded> d = std::make_unique<Decoded>();
+    std::vector<png_byte> rgb;
+    std::size_t width = 0, height = 0;
     Bytes in{bytes};
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
-        png_destroy_read_struct(&png, &info, nullptr);
+    bool read = false;
+    if (png && info) {
+        png_set_read_fn(png, &in, read_bytes);
+        png_set_user_limits(png, most, most);
+        // Compressed ancillary chunks (text, colour profiles) are inflated no further than this:
+        // none is used, and each could otherwise inflate to libpng's default of 8 MB.
+        png_set_chunk_malloc_max(png, kChunkMax);
+        read = read_guarded(png, info, width, height, rgb);
+    }
+    png_destroy_read_struct(&png, &info, nullptr);
+    if (!read) {
         why = path + ": it is truncated or damaged" + (messages.text.empty() ? std::string() : " (libpng: " + messages.text + ")") +
               ": save the image again";
         return false;
     }
-    png_set_read_fn(png, &in, read_bytes);
-    png_set_user_limits(png, most, most);
-    // Compressed ancillary chunks (text, colour profiles) are inflated no further than this:
-    // none is used, and each could otherwise inflate to libpng's default of 8 MB.
-    png_set_chunk_malloc_max(png, kChunkMax);
-    png_read_info(png, info);
-    png_set_expand(png);  // palette and grey below 8 bits to 8-bit RGB or grey
-    png_set_strip_16(png);
-    png_set_strip_alpha(png);
-    png_set_gray_to_rgb(png);
-    png_set_interlace_handling(png);
-    png_read_update_info(png, info);
-    const std::size_t width = png_get_image_width(png, info), height = png_get_image_height(png, info);
-    if (png_get_rowbytes(png, info) != width * 3) png_error(png, "not 8-bit RGB after conversion");
-    d->rgb.assign(width * height * 3, 0);
-    d->rows.resize(height);
-    for (std::size_t y = 0; y < height; ++y) d->rows[y] = d->rgb.data() + y * width * 3;
-    png_read_image(png, d->rows.data());
-    png_read_end(png, nullptr);
-    png_destroy_read_struct(&png, &info, nullptr);
     out.width = static_cast<int>(width), out.height = static_cast<int>(height);
     out.texels.resize(width * height);
     for (std::size_t i = 0; i < width * height; ++i)
-        out.texels[i] = uint32_t{d->rgb[3 * i]} << 16 | uint32_t{d->rgb[3 * i + 1]} << 8 | d->rgb[3 * i + 2];
+        out.texels[i] = uint32_t{rgb[3 * i]} << 16 | uint32_t{rgb[3 * i + 1]} << 8 | rgb[3 * i + 2];
     out.source = path;
     return true;
 }
