@@ -5,9 +5,9 @@
 //
 // The frame order is `noneuclid render`'s (app/picture.cpp): the controls due at time 0, then
 // frame 0 drawn; each next frame one step of 1/60 s, the controls due at the new time, the
-// frame drawn. The controls act, and the HUD is filled, as the program's session does
-// (app/session.cpp, without attract mode), so a recording's frames equal render's, pixel for
-// pixel.
+// frame drawn. The controls act, and the HUD's game is filled, by the rules the program's
+// session uses (render/play.hpp; the session's attract mode aside), so a recording's frames
+// equal render's, pixel for pixel.
 #include <cstdio>
 
 #include "board.hpp"
@@ -17,6 +17,7 @@
 #include "render/font.hpp"
 #include "render/hud.hpp"
 #include "render/palette.hpp"
+#include "render/play.hpp"
 #include "world/scene.hpp"
 #include "world/world.hpp"
 
@@ -37,28 +38,15 @@ alignas(4) uint16_t g_pixels[board::kWidth * kBandRows];
 struct View {
     render::DrawOptions draw;
     bool hud = false;
-    long best = 0;          // the game's high score (app/session.cpp's best_, new_best_)
-    bool new_best = false;
+    render::BestScore best;  // the game's high score
 };
 
-// A control as app/session.cpp's apply() takes it: a world action when it changes something
-// (a press of what is held is not, but for the actions that act on each press); the projection
-// control, the next projection on its press; hud, the HUD on or off on its press.
+// A control as the program's session takes it (render/play.hpp): a world action, or the
+// projection control, the next projection on its press; hud, the HUD on or off on its press.
 void apply(World& w, View& v, world::Control c, bool pressed) {
-    render::DrawOptions& o = v.draw;
-    world::Action a{};
-    if (world::control_action(c, a)) {
-        if (pressed == w.held(a) && !world::acts_on_press(a)) return;
-        if (pressed) w.press(a);
-        else w.release(a);
-        return;
-    }
-    if (pressed && c == world::Control::hud) v.hud = !v.hud;
-    if (!pressed || c != world::Control::projection) return;
-    const int count = static_cast<int>(sizeof geo::kProjections / sizeof geo::kProjections[0]);
-    int i = 0;
-    while (i < count && geo::kProjections[i] != o.projection) ++i;
-    o.projection = geo::kProjections[(i + 1) % count];
+    if (render::apply_control(w, c, pressed) != render::Applied::not_action || !pressed) return;
+    if (c == world::Control::hud) v.hud = !v.hud;
+    if (c == world::Control::projection) v.draw.projection = render::next_projection(v.draw.projection);
 }
 
 // The controls due by the world's time now.
@@ -83,17 +71,10 @@ render::DrawOptions draw_options(const Recording& r) {
     return o;
 }
 
-// After a step, as app/session.cpp's game_events: a game that starts has no new best yet; one
-// that ends may beat the best.
+// After a step: the best score (render/play.hpp), as the program's session keeps it.
 void game_events(const World& w, View& v) {
     const auto& g = w.game();
-    for (int i = 0; i < g.event_count(); ++i) {
-        const world::GameEvent& e = g.events()[i];
-        if (e.kind == world::GameEvent::start) v.new_best = false;
-        if (e.kind != world::GameEvent::over) continue;
-        v.new_best = e.value > v.best;
-        if (v.new_best) v.best = e.value;
-    }
+    for (int i = 0; i < g.event_count(); ++i) v.best.take(g.events()[i]);
 }
 
 // The HUD as app/session.cpp's draw_hud fills it for a recording played by render: English, the
@@ -109,15 +90,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     info.controls = lang::text(s.zoom.on() ? Text::legend_zoom_buttons : fire ? Text::legend_buttons
                                                                               : Text::legend_buttons_no_fire,
                                lang::Language::en);
-    const auto& g = w.game();
-    render::HudGame& h = info.game;
-    h.on = g.on();
-    if (h.on) {
-        h.score = g.score, h.best = v.best, h.new_best = v.new_best, h.lives = g.lives, h.level = g.level;
-        if (g.phase == world::GamePhase::ready) h.screen = render::HudGame::ready;
-        else if (g.phase == world::GamePhase::over) h.screen = render::HudGame::over;
-        else h.screen = w.time - g.level_since < 2 ? render::HudGame::new_level : render::HudGame::none;
-    }
+    info.game = render::hud_game(w, v.best);
     const render::PaletteFrame colours = render::palette_frame(v.draw.palette);
     render::draw_hud(c, render::builtin_font(), info, colours.text, colours.dim);
 }
@@ -140,7 +113,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     static Scratch scratch;
     scratch.prepare(w);
     scratch.backdrop.reserve(board::kHeight);  // (the backdrop's rows kept: the same every frame)
-    View o{draw_options(setup), setup.hud, setup.best};
+    View o{draw_options(setup), setup.hud, {setup.best}};
     const std::size_t allocations = heap_allocations();
 
     play_due(w, o);

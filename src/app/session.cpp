@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 
 #include "app/one_button.hpp"
 #include "app/recorder.hpp"
@@ -11,6 +10,7 @@
 #include "render/hud.hpp"
 #include "render/measure_panel.hpp"
 #include "render/parallel_frame.hpp"
+#include "render/play.hpp"
 #include "render/worker_pool.hpp"
 #include "uneven/draw.hpp"
 #include "uneven/dump.hpp"
@@ -56,7 +56,7 @@ public:
           font_(font),
           recorder_(recorder),
           scores_(scores),
-          best_(o.best),
+          best_{o.best},
           pool_(o.threads),
           autopilot_(o.attract, scene.curvature_rate),
           dt_(o.dt) {
@@ -166,7 +166,7 @@ public:
         info.controls = attract ? lang::text(world_.game().on() ? Text::legend_attract_game : Text::legend_attract,
                                              options_.language)
                                 : options_.legend.c_str();
-        info.game = hud_game();
+        info.game = render::hud_game(world_, best_);
         char note[120];
         if (zoom_note(note, sizeof note)) info.note = note;
         info.large = options_.large_hud;
@@ -242,15 +242,10 @@ private:
     // Takes effect and is recorded: a world action when it changes something (a press of what
     // is held is not), a view control on its press.
     void apply(world::InputEvent e) {
-        world::Action a{};
-        if (world::control_action(e.control, a)) {
-            if (e.pressed == world_.held(a) && !world::acts_on_press(a)) return;
+        const render::Applied done = render::apply_control(world_, e.control, e.pressed);
+        if (done == render::Applied::pressed || done == render::Applied::released)
             record(e.pressed ? ScriptEvent::press : ScriptEvent::release, e.control);
-            if (e.pressed) world_.press(a);
-            else world_.release(a);
-            return;
-        }
-        if (!e.pressed) return;
+        if (done != render::Applied::not_action || !e.pressed) return;
         switch (e.control) {
             case world::Control::projection: {
                 if constexpr (kUneven<W>) {  // its two views, in turn
@@ -260,10 +255,7 @@ private:
                     record(ScriptEvent::tap, e.control);
                     break;
                 }
-                const int count = static_cast<int>(std::size(geo::kProjections));
-                int i = 0;
-                while (i < count && geo::kProjections[i] != options_.draw.projection) ++i;
-                options_.draw.projection = geo::kProjections[(i + 1) % count];
+                options_.draw.projection = render::next_projection(options_.draw.projection);
                 record(ScriptEvent::tap, e.control);
                 break;
             }
@@ -311,11 +303,8 @@ private:
         const auto& g = world_.game();
         for (int i = 0; i < g.event_count(); ++i) {
             const world::GameEvent& e = g.events()[i];
-            if (e.kind == world::GameEvent::start) new_best_ = false;
-            if (e.kind != world::GameEvent::over) continue;
-            new_best_ = e.value > best_;
-            if (new_best_) best_ = e.value;
-            if (scores_) scores_->game_over(e.value, g.level);
+            best_.take(e);
+            if (e.kind == world::GameEvent::over && scores_) scores_->game_over(e.value, g.level);
         }
         if (before == world::GamePhase::over && g.phase == world::GamePhase::ready) autopilot_.engage();
     }
@@ -342,29 +331,13 @@ private:
                 break;
             }
     }
-    render::HudGame hud_game() const {
-        render::HudGame h;
-        const auto& g = world_.game();
-        h.on = g.on();
-        if (!h.on) return h;
-        h.score = g.score, h.best = best_, h.new_best = new_best_, h.lives = g.lives, h.level = g.level;
-        switch (g.phase) {
-            case world::GamePhase::ready: h.screen = render::HudGame::ready; break;
-            case world::GamePhase::over: h.screen = render::HudGame::over; break;
-            case world::GamePhase::playing:
-                h.screen = world_.time - g.level_since < 2 ? render::HudGame::new_level : render::HudGame::none;
-                break;
-        }
-        return h;
-    }
 
     W world_;
     SessionOptions options_;
     const render::Font& font_;
     Recorder* recorder_;
     GameOverSink* scores_;
-    long best_;
-    bool new_best_ = false;
+    render::BestScore best_;
     render::WorkerPool pool_;
     Autopilot autopilot_;
     double dt_;  // world seconds a step: the clock (World::step)

@@ -6,6 +6,7 @@
 
 #include "files/dump.hpp"
 #include "render/draw_world.hpp"
+#include "render/play.hpp"
 
 namespace noneuclid::capi {
 namespace {
@@ -41,9 +42,7 @@ public:
     void set_curvature(double K) override { world_.K = T(K); }
 
     void control(world::Action a, bool pressed) override {
-        if (pressed == world_.held(a) && !world::acts_on_press(a)) return;
-        if (pressed) world_.press(a);
-        else world_.release(a);
+        if (render::apply_action(world_, a, pressed) == render::Applied::nothing) return;
         list_bodies();  // (reset, a new game: other bodies)
     }
 
