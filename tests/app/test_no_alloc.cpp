@@ -5,9 +5,6 @@
 // allocations too; the pool and its scratch are made before counting starts, once).
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
 #include "render/draw_world.hpp"
@@ -16,23 +13,8 @@
 #include "render/measure_panel.hpp"
 #include "app/frame_loop.hpp"
 #include "app/memory_display.hpp"
+#include "counting_new.hpp"
 #include "uneven/draw.hpp"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-void* operator new(std::size_t n) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -63,16 +45,14 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
     w.press(world::Action::thrust);  // the ship accelerates: the velocity path runs too
     w.press(world::Action::curvature_down);
     for (int i = 0; i < 3; ++i) w.step(1.0 / 60), draw(c, o);  // warm up
-    g_allocations = 0;
-    g_counting = true;
+    test::start_counting();
     for (int i = 0; i < frames; ++i) {
         w.step(1.0 / 60);
         draw(c, o);
         hud.K = static_cast<double>(w.K);
         render::draw_hud(c, render::builtin_font(), hud);
     }
-    g_counting = false;
-    return g_allocations.load();
+    return test::stop_counting();
 }
 
 TEST(NoAllocation, SteadyStateFramesAllocateNothing) {
@@ -119,8 +99,7 @@ long instrument_allocations() {
     w.press(world::Action::thrust);
     w.press(world::Action::curvature_down);
     w.step(1.0 / 60), render::draw_world(c, w, {}, scratch);
-    g_allocations = 0;
-    g_counting = true;
+    test::start_counting();
     for (int i = 0; i < 400; ++i) {
         if (i % 100 == 0) w.press(world::Action::instrument), w.release(world::Action::instrument);
         if (i % 9 == 0) w.press(world::Action::fire), w.release(world::Action::fire);
@@ -131,8 +110,7 @@ long instrument_allocations() {
         for (const auto& g : w.gauges())
             if (g.on()) render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(g.reading()), side++);
     }
-    g_counting = false;
-    return g_allocations.load();
+    return test::stop_counting();
 }
 
 TEST(NoAllocation, TheInstrumentsAllocateNothingPerFrame) {
@@ -142,11 +120,9 @@ TEST(NoAllocation, TheInstrumentsAllocateNothingPerFrame) {
 
 // The counter does count: a frame that builds a vector is seen.
 TEST(NoAllocation, TheCounterSeesAnAllocation) {
-    g_allocations = 0;
-    g_counting = true;
+    test::start_counting();
     std::vector<int> v(10);
-    g_counting = false;
-    EXPECT_GE(g_allocations.load(), 1);
+    EXPECT_GE(test::stop_counting(), 1);
     EXPECT_EQ(v.size(), 10u);
 }
 
@@ -207,14 +183,13 @@ long loop_allocations(world::EngineKind engine, int threads, const char* scene_n
     SynthOut sound;
     loop.set_sound(&sound);
     for (int i = 0; i < 3; ++i) loop.tick();  // warm up
-    g_allocations = 0;
-    g_counting = true;
+    test::start_counting();
     long frames = 0;
     while (loop.tick()) ++frames;
-    g_counting = false;
+    const long allocations = test::stop_counting();
     EXPECT_EQ(frames, 397);
     EXPECT_GT(sound.rendered_, 0) << "the keys thrust and fire: something sounded";
-    return g_allocations.load();
+    return allocations;
 }
 
 TEST(NoAllocation, TheFrameLoopAllocatesNothingPerFrame) {
@@ -254,15 +229,13 @@ TEST(NoAllocation, AnUnevenWorldAllocatesNothingPerFrame) {
             o.projection = chart ? geo::Projection::stereographic : geo::Projection::azimuthal_equidistant;
             w.press(world::Action::strength_up), w.press(world::Action::curvature_down), w.press(world::Action::thrust);
             for (int i = 0; i < 3; ++i) w.step(1.0 / 60), d.draw(c, w, o, true);  // warm up
-            g_allocations = 0;
-            g_counting = true;
+            test::start_counting();
             w.press(world::Action::instrument), w.release(world::Action::instrument);  // the live triangle, marked
             for (int i = 0; i < 40; ++i) {
                 if (i % 8 == 0) w.press(world::Action::fire), w.release(world::Action::fire);
                 w.step(1.0 / 60), d.draw(c, w, o, i % 2 == 0);
             }
-            g_counting = false;
-            EXPECT_EQ(g_allocations.load(), 0) << name << (chart ? " chart" : " inhabitant's view");
+            EXPECT_EQ(test::stop_counting(), 0) << name << (chart ? " chart" : " inhabitant's view");
         }
     }
 }

@@ -4,36 +4,17 @@
 // and K act as in the program; and stepping, drawing and reading allocate nothing.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <limits>
-#include <new>
 #include <string>
 #include <vector>
 
 #include "app/picture.hpp"
 #include "app/setup.hpp"
 #include "capi/noneuclid.h"
+#include "counting_new.hpp"
 #include "render/font.hpp"
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// Counts allocations while g_counting is on (this executable's own operator new).
-void* operator new(std::size_t n) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -283,8 +264,7 @@ TEST(CApi, SteppingDrawingAndReadingAllocateNothing) {
         std::vector<uint8_t> buf(320 * 240 * 2);
         ASSERT_EQ(nw_draw(w.w, buf.data(), buf.size(), 320, 240, 0, "rgb565"), NW_OK);  // (the canvas's first draw)
         ASSERT_EQ(nw_control(w.w, "fire", 1), NW_OK);
-        g_allocations = 0;
-        g_counting = true;
+        test::start_counting();
         for (int f = 0; f < 120; ++f) {
             nw_control(w.w, "thrust", f % 40 < 20);
             nw_step(w.w, 1);
@@ -297,8 +277,7 @@ TEST(CApi, SteppingDrawingAndReadingAllocateNothing) {
             }
             nw_event_count(w.w, &n);
         }
-        g_counting = false;
-        EXPECT_EQ(g_allocations.load(), 0) << scene;
+        EXPECT_EQ(test::stop_counting(), 0) << scene;
     }
 }
 
