@@ -9,7 +9,7 @@
 // Zoomed (--view KM), the Earth is the sphere of K = (KM / (pi 6371))^2 and the same holds with
 // the shown disc's edge at the angle KM / 6371 (or the projection's cut): zoom by curvature is
 // PROJ's map of the Earth at that scale.
-// Runs Debian's `proj` (proj-bin, a test dependency only); exit 77, skipped, without it.
+// Runs Debian's `proj` (proj-bin, a test dependency only); fails, naming it, without it.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -150,8 +150,8 @@ Result compare(const world::Scene& s, const ProjRow& row, double view, const std
 
 int main() {
     if (std::system("command -v proj > /dev/null 2>&1") != 0) {
-        std::puts("skipped: PROJ's proj is not installed (Debian: proj-bin)");
-        return 77;
+        std::puts("earth_proj: PROJ's proj is not installed: install Debian's proj-bin (platform/debian/packages.sh's test group)");
+        return 1;
     }
     char input[] = "/tmp/noneuclid-earth-proj-XXXXXX";
     const int fd = mkstemp(input);

@@ -14,6 +14,10 @@
 #   x11_test.sh NONEUCLID PNG_DIFF SCENE GAME_SCENE
 set -euo pipefail
 noneuclid=$1 png_diff=$2 scene=$3 game=$4
+for tool in Xvfb xdotool; do
+    command -v "$tool" >/dev/null ||
+        { echo "x11_test: $tool not found: install Debian's xvfb and xdotool (platform/debian/packages.sh's test group)" >&2; exit 1; }
+done
 tmp=$(mktemp -d)
 xvfb_pid=
 app_pid=
