@@ -156,7 +156,7 @@ constexpr int kAntipodeKSteps = 50, kAntipodeBodies = 4;  // K steps; bodies per
 // The fixed engine's bounds (px) over the whole population of bodies, which its points near the
 // antipode decide: vertices (a walk of the coasts' kernel, walk.hpp), edge points (the Q16.16
 // slerp and its polar reading, whose small components near the antipode the view magnifies).
-constexpr double kAntipodeVertices = 0.05, kAntipodeEdges = 0.14;
+constexpr double kAntipodeVertices = 0.05, kAntipodeEdges = 0.25;
 
 std::vector<double> k_sweep(const GeometryReportOptions& o, bool near_zero_only, bool antipode) {
     std::vector<double> ks;
@@ -204,6 +204,7 @@ int measure_screen_error(const GeometryReportOptions& o, ScreenErrorRow* rows, i
     int n = 0;
     for (int c = 0; c < kComparisonCount && n + 2 <= capacity; ++c) {
         const Comparison& cmp = comparison(c);
+        if (o.antipode_only && !cmp.antipode) continue;
         const int bodies = cmp.antipode ? o.bodies * kAntipodeBodies : o.bodies;
         const double from = cmp.antipode ? kAntipodeFrom : 0;
         const std::vector<Body> scene = cmp.short_edges ? make_scene(o.seed + 7, bodies, 1e-3, 2e-3, from, 0.95)

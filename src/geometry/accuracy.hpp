@@ -50,6 +50,7 @@ struct GeometryReportOptions {
     uint64_t seed = 20190101;
     int bodies = 40;       // per K
     int k_steps = 200;     // K = -1 + 2 i / k_steps
+    bool antipode_only = false;  // measure_screen_error: the rows near the antipode alone
 };
 
 int screen_error_row_count();

@@ -2,6 +2,9 @@
 // continuity through K = 0, screen y growing downward, and the screen report (the fixed engine
 // within a quarter pixel of double on the 1080-px disk; short distances keeping their digits).
 #include <gtest/gtest.h>
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 
 #include <iterator>
 #include <string>
@@ -64,7 +67,7 @@ struct ScreenBound {
 // antipode (K in [0.9, 1], centres at 0.75 to 0.95 of R), where the equidistant view magnifies
 // their error most, decide the edge points' bound (docs/accuracy.md has the figures); its
 // vertices, walked by the coasts' kernel, hold 0.05 px everywhere.
-constexpr double kAntipodeVerticesPx = 0.05, kAntipodeEdgesPx = 0.14;
+constexpr double kAntipodeVerticesPx = 0.05, kAntipodeEdgesPx = 0.25;
 const ScreenBound kScreenBounds[] = {
     {"fixed", "double", "K in [-1, 1]", kAntipodeVerticesPx, kAntipodeEdgesPx},
     {"float", "double", "K in [-1, 1]", 0.01, 0.01},
@@ -112,6 +115,45 @@ TEST(Screen, FixedEngineWithinAQuarterPixelOfDouble) {
         }
     }
     EXPECT_EQ(fixed_rows, 12);
+}
+
+// The bound near the antipode is a tail: one seed's bodies found 0.138 px, others more
+// (docs/accuracy.md: 0.156 px over 8 seeds, 0.194 over 64, 0.215 over 256). So the rows near
+// the antipode are sampled here over kSeeds seeds of their population (NONEUCLID_ANTIPODE_SEEDS
+// seeds if set: 256 gives the docs' figure), and every one is within the bounds of
+// kScreenBounds, the largest printed.
+TEST(Screen, NearTheAntipodeEverySeedWithinTheBound) {
+    int seeds = 8 / noneuclid::test::kEmulatedStride;
+    if (const char* e = std::getenv("NONEUCLID_ANTIPODE_SEEDS")) seeds = std::max(1, std::atoi(e));
+    std::vector<ScreenErrorRow> rows(static_cast<std::size_t>(screen_error_row_count()));
+    double most_edges = 0, most_vertices = 0;
+    long samples = 0;
+    for (int k = 0; k < seeds; ++k) {
+        GeometryReportOptions o;
+        o.seed += 1000 * static_cast<uint64_t>(k);
+        o.antipode_only = true;
+        const int n = measure_screen_error(o, rows.data(), static_cast<int>(rows.size()));
+        ASSERT_EQ(n, 6);  // three comparisons near the antipode, vertices and edge points each
+        for (int i = 0; i < n; ++i) {
+            const ScreenErrorRow& r = rows[static_cast<std::size_t>(i)];
+            ASSERT_EQ(std::string(r.engine), "fixed");
+            EXPECT_EQ(r.nonfinite, 0);
+            for (const ScreenBound& b : kScreenBounds) {
+                if (std::string(b.against) != r.against || std::string(b.where) != r.where || std::string(b.engine) != "fixed")
+                    continue;
+                const bool edges = std::string(r.what) == "edge points";
+                EXPECT_LE(r.max_px, edges ? b.edge_points_px : b.vertices_px)
+                    << "seed " << o.seed << ": " << r.against << ", " << r.where << ", " << r.what;
+            }
+            if (std::string(r.where) == "near the antipode") {
+                (std::string(r.what) == "edge points" ? most_edges : most_vertices) =
+                    std::max(std::string(r.what) == "edge points" ? most_edges : most_vertices, r.max_px);
+                samples += r.samples;
+            }
+        }
+    }
+    std::printf("near the antipode, %d seeds, %ld samples: vertices %.4f px, edge points %.4f px at most\n", seeds, samples,
+                most_vertices, most_edges);
 }
 
 
