@@ -72,9 +72,8 @@ void body_curve(Eval ev, const ScreenMap<T>& m, T K, const ShapeCache<T>& sh, co
 template <class T, class B, class Sink>
 void rigid_outline(T K, const B& b, ShapeCache<T>& cache, const ScreenMap<T>& m, Projection p, Vec3<T>* vecs,
                    Sink& sink) {
-    const std::size_t n = b.local.size();
-    const std::size_t edges = n < 2 ? 0 : (b.closed() ? n : n - 1);
-    const ShapeCache<T>& sh = cache.refresh(K, b);
+    const ShapeCache<T>& sh = cache.refresh(K, b, m.detail);
+    const std::size_t n = sh.count, edges = sh.edges;  // (the vertices the view keeps: all but of a simplified line)
     const Motion<T> motion = body_motion(K, b.centre, b.facing);  // (MotionApply keeps a reference to it)
     const MotionApply<T> apply(motion);
     apply(sh.local.data(), vecs, n);

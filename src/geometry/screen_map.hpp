@@ -45,12 +45,17 @@ inline constexpr SubPoint kBreak{INT32_MIN, INT32_MIN};
 // sphere's antipode lies on it (geo::antipode_circle), kAntipodeMarginPx inside it, since there
 // the view turns one point into a whole circle and a point's direction is lost.
 inline constexpr double kAntipodeMarginPx = 1.0;
+struct DetailScale;  // geometry/detail.hpp
+
 template <class T>
 struct ScreenMap {
     T cx{}, cy{}, scale{};
     double rim = 0;        // the limit circle's radius, px
     int64_t clip = 0;      // the clip circle's radius, 1/256 px
     int32_t ox = 0, oy = 0;  // the centre, 1/256 px
+    // The view's scale for lines simplified to it (geometry/detail.hpp), set by the frame that
+    // draws them; null: such lines are drawn whole.
+    const DetailScale* detail = nullptr;
     // Whether the world outside the clip circle is a ball about the antipode smaller than a
     // hemisphere (K > 0 and the shown disc reaches the equator): then an edge whose ends are
     // both outside lies wholly outside (a geodesic between two points of such a ball stays in it).

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/detail.hpp"
 #include "geometry/geometry.hpp"
 #include "geometry/edge_curve.hpp"
 
@@ -47,6 +48,15 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
     std::vector<HalfSine<T>> half_sine;
     std::vector<uint8_t> radial;
     bool all_radial = false;
+    // A line simplified for the view (geometry/detail.hpp): its tree (the body's scene
+    // description's, if it has one), the vertices the view keeps (local, root and the edges
+    // above are then theirs, `count` and `edges` of them), the walk's stack, and the
+    // DetailScale stamp they were kept for. Without a tree every vertex is drawn.
+    const DetailTree* tree = nullptr;
+    std::vector<uint32_t> kept;
+    std::vector<int32_t> stack;
+    uint32_t detail_stamp = 0;
+    std::size_t count = 0, edges = 0;
 
     // Sized for body b, its parts that do not depend on K set; not valid until refreshed.
     template <class B>
@@ -60,6 +70,11 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
         h.assign(edges, {});
         walked.assign(edges, 0);
         cos_phi.assign(n, T{}), sin_phi.assign(n, T{}), half_sine.assign(edges, {}), radial.assign(edges, kNotRadial);
+        tree = nullptr;
+        if constexpr (requires { b.desc->detail; })
+            if (b.desc && !b.desc->detail.empty()) tree = &b.desc->detail;
+        kept.assign(tree ? n : 0, 0), stack.assign(tree ? n : 0, 0);
+        count = n, this->edges = edges;
         set_angles(b);
     }
     // The parts that depend on the shape alone, in place (a game's asteroid takes a new shape
@@ -84,11 +99,17 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
 
     // The cache at curvature K for body b (the body it was made for), refreshed first if K
     // changed since.
+    // With a tree and `view`, for that view too (the vertices it keeps).
     template <class B>
-    const ShapeCache& refresh(T curvature, const B& b) {
+    const ShapeCache& refresh(T curvature, const B& b, const DetailScale* view = nullptr) {
         if (shape != b.shape) set_angles(b);
-        if (valid && K == curvature && sized == b.sized) return *this;
+        if (tree && view) {
+            if (!(valid && K == curvature && sized == b.sized && detail_stamp == view->stamp)) refresh_kept(curvature, b, *view);
+            return *this;
+        }
+        if (valid && K == curvature && sized == b.sized && count == b.local.size()) return *this;
         const std::size_t n = b.local.size(), edges = walked.size();
+        count = n, this->edges = edges, detail_stamp = 0;  // (every vertex: no view's kept set; stamps start at 1)
         for (std::size_t i = 0; i < n; ++i) {  // to_vec and root_S_K, S_K taken once
             const T rho = b.local[i].r, s = S_K(curvature, rho);
             local[i] = {C_K(curvature, rho), s * cos_phi[i], s * sin_phi[i]};
@@ -110,6 +131,67 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
         }
         K = curvature, sized = b.sized, valid = true;
         return *this;
+    }
+
+private:
+    // The vertices the view keeps (in order: each bracket's left part, its split, its right
+    // part), then local, root and the edges between consecutive kept vertices, as refresh
+    // makes them for every vertex.
+    template <class B>
+    void refresh_kept(T curvature, const B& b, const DetailScale& view) {
+        const std::size_t n = b.local.size();
+        const double ref = static_cast<double>(b.local[tree->ref].r);
+        const double f = tree->ref_rho > 0 ? ref / tree->ref_rho : 1, px = kDetailTolerancePx;
+        std::size_t m = 0;
+        // In-order, from the explicit stack: a node is pushed as its index + 1 to be refined,
+        // as -(index + 1) to emit its split after its left part.
+        auto walk = [&](int32_t root) {
+            std::size_t top = 0;
+            if (root >= 0) stack[top++] = root + 1;
+            while (top > 0) {
+                const int32_t e = stack[--top];
+                if (e < 0) {
+                    const DetailNode& d = tree->nodes[-e - 1];
+                    kept[m++] = static_cast<uint32_t>(d.split);
+                    if (d.right >= 0) stack[top++] = d.right + 1;
+                    continue;
+                }
+                const DetailNode& d = tree->nodes[e - 1];
+                if (!(d.deviation * f * view.over(d.rho_min * f, d.rho_max * f) > px)) continue;
+                stack[top++] = -e;
+                if (d.left >= 0) stack[top++] = d.left + 1;
+            }
+        };
+        kept[m++] = 0;
+        walk(tree->roots[0]);
+        if (tree->far > 0) {  // a ring: its far vertex, then the way back
+            kept[m++] = static_cast<uint32_t>(tree->far);
+            walk(tree->roots[1]);
+        } else if (n > 1) {
+            kept[m++] = static_cast<uint32_t>(n - 1);
+        }
+        count = m, edges = m < 2 ? 0 : (b.closed() ? m : m - 1);
+        for (std::size_t k = 0; k < m; ++k) {  // as refresh does for every vertex
+            const std::size_t i = kept[k];
+            const T rho = b.local[i].r, s = S_K(curvature, rho);
+            local[k] = {C_K(curvature, rho), s * cos_phi[i], s * sin_phi[i]};
+            root[k] = clamped_root(s);
+        }
+        for (std::size_t e = 0; e < edges; ++e) {
+            const std::size_t k = e + 1 == m ? 0 : e + 1;
+            const Polar<T>&p = b.local[kept[e]], &q = b.local[kept[k]];
+            const T turn = p.theta > q.theta ? p.theta - q.theta : q.theta - p.theta;
+            const T d = p.r == T(0) || q.r == T(0) || turn == pi_v<T> ? p.r + q.r
+                        : turn == T(0) ? (p.r > q.r ? p.r - q.r : q.r - p.r)
+                                       : distance_from(curvature, p.r, q.r, root[e], root[k], sine_of_half(p.theta - q.theta));
+            length[e] = d;
+            u[e] = Math::u_of(curvature, d);
+            walked[e] = Math::too_long(u[e]) ||
+                        (curvature * d * d > T(2) && antipodal_edge(curvature, d, Sf(curvature * d * d)));
+            h[e] = walked[e] ? typename Math::W{} : Math::half(u[e]);
+        }
+        K = curvature, sized = b.sized, valid = true;
+        detail_stamp = view.stamp;
     }
 };
 

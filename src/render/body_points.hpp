@@ -33,6 +33,22 @@ void make_shape_caches(const W& world, std::vector<typename W::engine::Cache>& c
     for (std::size_t i = 0; i < caches.size(); ++i) caches[i].make(world.bodies[i]);
 }
 
+// Whether any of the caches is of a line simplified for the view (geometry/detail.hpp).
+template <class C>
+bool any_detail(const std::vector<C>& caches) {
+    if constexpr (requires(const C& c) { c.tree; })
+        for (const C& c : caches)
+            if (c.tree) return true;
+    return false;
+}
+
+// The screen map m told the view's scale for such lines (d, updated if the view changed).
+template <class T>
+void set_detail(geo::ScreenMap<T>& m, geo::DetailScale& d, T K, T R, geo::Projection p) {
+    d.update(static_cast<double>(K), static_cast<double>(R), p, static_cast<double>(m.scale));
+    m.detail = &d;
+}
+
 // One body's outline, clipped, into out (room for body_point_capacity(b)) as one polyline with
 // kBreak where it leaves the clip circle or a point cannot be shown. Returns the number of
 // entries written. Writes only shape (the body's cache, made for it), verts, vecs (room for

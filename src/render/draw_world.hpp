@@ -44,6 +44,9 @@ struct DrawScratch {
     // The backdrop's rows, kept from frame to frame where reserved for the canvas's height (the
     // firmware does: render/backdrop.hpp); otherwise computed as drawn.
     BackdropRows backdrop;
+    // The view's scale for lines simplified to it (geometry/detail.hpp), if a body is one.
+    geo::DetailScale detail;
+    bool any_detail = false;
     // A frame drawn in bands (Canvas::band): each body's lowest reach (its points' largest y
     // and the lines' row margin, 1/256 px; INT32_MAX with a fill) found in the band at row 0 of
     // the world's frame `banded`, so that the later bands skip the bodies that end above them.
@@ -60,6 +63,7 @@ struct DrawScratch {
         vertices.resize(most_v);
         vectors.resize(most_v);
         make_shape_caches(world, shapes);
+        any_detail = render::any_detail(shapes);
         fill.prepare(world, 1);
         lowest.assign(world.bodies.size(), INT32_MAX);
         banded = -1;
@@ -97,7 +101,8 @@ template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar, typename W::engine>& s,
                 bool backdrop = true) {
     using T = typename W::scalar;
-    const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    if (s.any_detail) set_detail(m, s.detail, world.K, world.R, o.projection);
     if (backdrop) draw_backdrop(c, m, o, &s.backdrop);
     s.fill.begin_frame(c);
     // In bands, top to bottom: the first finds the bodies' reach, the later ones skip by it.

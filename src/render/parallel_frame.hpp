@@ -118,6 +118,8 @@ struct ParallelScratch : ParallelScratchBase {
     std::size_t stride_v = 1, stride_vec = 1;
     std::vector<typename E::Cache> shapes;  // world.bodies[i]'s is shapes[i], refreshed by the thread that does it
     FillScratch<T> fill;                // each body's fill planned by the thread that does it; a RowWork per thread
+    geo::DetailScale detail;            // the view's scale for lines simplified to it (geometry/detail.hpp)
+    bool any_detail = false;
 
     template <class W>
     void prepare(const W& world, const WorkerPool& pool) {
@@ -134,6 +136,7 @@ struct ParallelScratch : ParallelScratchBase {
         vertices.resize(stride_v * static_cast<std::size_t>(pool.size()));
         vectors.resize(stride_vec * static_cast<std::size_t>(pool.size()));
         make_shape_caches(world, shapes);
+        any_detail = render::any_detail(shapes);
         fill.prepare(world, pool.size());
     }
 };
@@ -300,7 +303,8 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
                 WorkerPool& pool, bool backdrop = true) {
     using T = typename W::scalar;
     using clock = std::chrono::steady_clock;
-    const ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    if (s.any_detail) set_detail(m, s.detail, world.K, world.R, o.projection);
     const int threads = pool.size();
     if (threads > kMaxBandThreads || c.height() < threads) return detail::draw_unbanded(c, world, m, o, s, backdrop);
     const LineStyle line{o.antialias, o.line_width};

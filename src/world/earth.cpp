@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "world/earth_data.hpp"
+#include "world/sphere_lines.hpp"
 
 namespace noneuclid::world {
 
@@ -31,14 +32,6 @@ constexpr bool earth_data_whole() {
 }
 static_assert(earth_data_whole(), "src/world/earth_data.hpp is damaged: regenerate it (platform/tools/earth_coastlines.py)");
 
-struct V3 {
-    double x, y, z;
-};
-V3 unit(double lat, double lon) {
-    const double p = lat * kDeg, l = lon * kDeg;
-    return {std::cos(p) * std::cos(l), std::cos(p) * std::sin(l), std::sin(p)};
-}
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 // The centre's frame: east, north and up, as unit vectors of the Earth's.
 struct Frame {
@@ -124,6 +117,9 @@ struct Placing {
     Frame frame;
     double scale = 1, cull = 1e300;
     bool bend = true;  // halve edges by the bend bound (else only by length: great circles at K = z)
+    // Every point kept, each line with its Douglas-Peucker tree, simplified when drawn for the
+    // view (geometry/detail.hpp); else simplified here, for the kiosk's disc.
+    bool per_view = false;
     double tolerance = kSimplifyPx * kPi / kDiscPx;  // the coastlines' simplification, radians of the Earth
     double min_arc = kMinArc;
     SceneBody::Vertex polar(V3 v) const {
@@ -133,10 +129,7 @@ struct Placing {
     }
 };
 
-double arc(V3 a, V3 b) {
-    const V3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    return std::atan2(std::sqrt(dot(c, c)), dot(a, b));
-}
+
 
 class Lines {
 public:
@@ -223,6 +216,7 @@ private:
             b.grid = true;
             b.tessellation = 2;
             b.vertices = std::move(piece_);
+            if (frame_.per_view) b.detail = line_tree(b.vertices, closed, frame_.scale, kMaxStep);
             scene_.bodies.push_back(std::move(b));
         }
         piece_.clear();
@@ -240,19 +234,6 @@ private:
 
 const Rgb kGraticule{55, 70, 95}, kCoast{130, 215, 150}, kTissot{235, 165, 70};
 
-// The angle from p to the great-circle arc from a to b (to its nearer end where p's foot on the
-// circle lies outside the arc; to a where the arc is a point).
-double arc_distance(V3 p, V3 a, V3 b) {
-    const V3 c{a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-    const double cn = std::sqrt(dot(c, c));
-    if (cn > 1e-15) {
-        // p's foot on the circle is on the arc when it lies after a and before b, going round c.
-        const V3 ca{c.y * a.z - c.z * a.y, c.z * a.x - c.x * a.z, c.x * a.y - c.y * a.x};
-        const V3 cb{c.y * b.z - c.z * b.y, c.z * b.x - c.x * b.z, c.x * b.y - c.y * b.x};
-        if (dot(p, ca) >= 0 && dot(p, cb) <= 0) return std::fabs(std::asin(std::fmax(-1.0, std::fmin(1.0, dot(p, c) / cn))));
-    }
-    return std::fmin(arc(p, a), arc(p, b));
-}
 
 // Douglas-Peucker on the sphere: keep[i] for the points of pts[first..last] a line within
 // tolerance (radians) of every point needs; the ends are kept.
@@ -275,7 +256,9 @@ void simplify(const std::vector<V3>& pts, std::size_t first, std::size_t last, d
 void simplified(Lines& lines, std::vector<V3>& pts, bool closed, const Placing& f, std::vector<char>& keep) {
     if (closed) pts.push_back(pts.front());
     keep.assign(pts.size(), 0);
-    if (closed) {
+    if (f.per_view) {
+        keep.assign(pts.size(), 1);
+    } else if (closed) {
         std::size_t far = 0;
         for (std::size_t i = 1; i < pts.size(); ++i)
             if (arc(pts[i], pts[0]) > arc(pts[far], pts[0])) far = i;
@@ -379,6 +362,7 @@ void earth_scene(Scene& s, double lat0, double lon0, double view_km, bool tissot
     s.limit_radius = kPi;
     Placing f{Frame(lat0, lon0)};
     f.bend = bend;
+    f.per_view = !bend;
     if (view_km > 0) {
         f.scale = 1 / std::sqrt(s.curvature);
         f.cull = s.limit_radius + kCullMargin;

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/detail.hpp"
 #include "geometry/measure.hpp"
 
 #include "world/image.hpp"
@@ -53,6 +54,9 @@ struct SceneBody {
         double rho = 0, phi_deg = 0;
     };
     std::vector<Vertex> vertices;
+    // A line drawn simplified for each view (geometry/detail.hpp: the earth scene's lines);
+    // empty: every vertex drawn.
+    geo::DetailTree detail;
     bool controlled = false;  // the ship: thrust and turn act on it
     bool grid = false;        // part of a grid (drawn dimmer); otherwise an ordinary body
     BodyKind role = BodyKind::body;  // asteroid or bullet: a game's slot (world/game.hpp)

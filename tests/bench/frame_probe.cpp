@@ -163,7 +163,8 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
         render::copy_canvas(c, fb);
     };
     frame();  // warm-up, in every run
-    const auto m = render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection);
+    auto m = render::ScreenMap<T>::of(c, wd.K, wd.R, o.projection);
+    if (scratch.any_detail) render::set_detail(m, scratch.detail, wd.K, wd.R, o.projection);  // (as the frame draws them)
     std::vector<render::SubPoint> pts;
     std::vector<std::size_t> counts;
     for (std::size_t i = 0; i < wd.bodies.size(); ++i) {

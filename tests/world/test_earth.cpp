@@ -191,6 +191,54 @@ double bend_px(double lat0, double lon0, world::SceneBody::Vertex u, world::Scen
     return worst;
 }
 
+// Every line's Douglas-Peucker tree (geometry/detail.hpp) holds what the view's walk relies
+// on: each node's inner vertices lie within its deviation of the great-circle arc between its
+// ends (in long double, at the scene's K = 1) and within its rho range; its split is one of
+// them, its children the brackets either side; and the tree covers every vertex once. Returns
+// the inner vertices checked.
+long sound_trees(const world::Scene& s, double lat0, double lon0) {
+    long checked = 0;
+    for (const world::SceneBody& b : s.bodies) {
+        if (b.controlled) continue;
+        const geo::DetailTree& t = b.detail;
+        const int32_t n = static_cast<int32_t>(b.vertices.size());
+        EXPECT_FALSE(t.empty()) << b.name;
+        if (t.empty()) continue;
+        std::vector<int> seen(static_cast<std::size_t>(n), 0);
+        auto at = [&](int32_t i) { return place(lat0, lon0, b.vertices[i % n].rho, b.vertices[i % n].phi_deg); };
+        std::vector<std::pair<int32_t, std::pair<int32_t, int32_t>>> todo;  // node, bracket
+        const int32_t last = t.far > 0 ? t.far : n - 1;
+        todo.push_back({t.roots[0], {0, last}});
+        if (t.far > 0) todo.push_back({t.roots[1], {t.far, n}});
+        seen[0] = 1, seen[static_cast<std::size_t>(last)] += 1;
+        while (!todo.empty()) {
+            const auto [k, br] = todo.back();
+            todo.pop_back();
+            const auto [lo, hi] = br;
+            if (k < 0) {
+                EXPECT_LE(hi, lo + 1) << b.name << ": a bracket with inner vertices and no node";
+                continue;
+            }
+            const geo::DetailNode& d = t.nodes[static_cast<std::size_t>(k)];
+            EXPECT_TRUE(d.split > lo && d.split < hi) << b.name;
+            if (!(d.split > lo && d.split < hi)) continue;
+            ++seen[static_cast<std::size_t>(d.split)];
+            const P3 a = at(lo), c = at(hi);
+            for (int32_t i = lo; i <= hi; ++i) {
+                const double rho = b.vertices[i % n].rho;
+                EXPECT_TRUE(rho >= d.rho_min && rho <= d.rho_max) << b.name << " vertex " << i;
+                if (i == lo || i == hi) continue;
+                EXPECT_LE(static_cast<double>(to_arc(at(i), a, c)), d.deviation) << b.name << " vertex " << i;
+                ++checked;
+            }
+            todo.push_back({d.left, {lo, d.split}});
+            todo.push_back({d.right, {d.split, hi}});
+        }
+        for (int32_t i = 0; i < n; ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], 1) << b.name << " vertex " << i;
+    }
+    return checked;
+}
+
 TEST(Earth, EveryCoastPointLiesWithinHalfAPixelOfTheSimplifiedLine) {
     int k = 0;
     for (const bool bent : {true, false})  // (the level halved for every K, and the one for K = 1 alone)
@@ -235,9 +283,16 @@ TEST(Earth, EveryCoastPointLiesWithinHalfAPixelOfTheSimplifiedLine) {
         }
         EXPECT_GT(worst, 0.25) << lat << "," << lon;  // (not vacuous: the bound is what stops the halving)
         EXPECT_LE(longest, world::Budget::kVerticesPerBody);
-        // Fewer coast vertices than the data's points (the simplification), and every point of
-        // the data within the tolerance of them, but near the antipode where lines may break.
-        EXPECT_LT(coast, static_cast<long>(std::size(world::earth_data::kPoints))) << lat << "," << lon;
+        // The bent level: fewer coast vertices than the data's points (simplified here), and
+        // every point of the data within the tolerance of them, but near the antipode where
+        // lines may break. The plain one: every point, each line with its tree (simplified as
+        // drawn, for the view), and the trees sound.
+        if (bent) {
+            EXPECT_LT(coast, static_cast<long>(std::size(world::earth_data::kPoints))) << lat << "," << lon;
+        } else {
+            EXPECT_EQ(coast, static_cast<long>(std::size(world::earth_data::kPoints))) << lat << "," << lon;
+            EXPECT_GT(sound_trees(s, lat, lon), 4000) << lat << "," << lon;
+        }
         EXPECT_GT(within_tolerance(s, lat, lon, 1, kPi - 0.1, kTolerance), 4000) << lat << "," << lon;
     }
 }
