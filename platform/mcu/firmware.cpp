@@ -111,7 +111,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     }
     World& w = *made;
     static Scratch scratch;
-    scratch.prepare(w);
+    scratch.prepare(w, false);  // (no room kept for still bodies' points: RAM is short)
     scratch.backdrop.reserve(board::kHeight);  // (the backdrop's rows kept: the same every frame)
     View o{draw_options(setup), setup.hud, {setup.best}};
     const std::size_t allocations = heap_allocations();

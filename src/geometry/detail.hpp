@@ -19,6 +19,9 @@ namespace noneuclid::geo {
 
 // How far a dropped vertex may lie from the drawn line, in pixels of the view drawn.
 inline constexpr double kDetailTolerancePx = 0.6;
+// How far past the rim the lines are simplified as at the rim (a zoom's record of a line, drawn
+// that much wider than the view: render/still_points.hpp).
+inline constexpr double kDetailReach = 1.25;
 
 // A bracket [first, last] of a line's vertices (last == vertex count: a ring's start again)
 // split at `split`: `deviation`, the farthest of its inner vertices from the geodesic between
@@ -46,11 +49,12 @@ struct DetailTree {
 // radial and azimuthal scale factors times the screen's scale, sampled at kSamples + 1 rho from
 // 0 to the shown disc's rim. Each factor is monotonic in r for every azimuthal view, so the
 // greatest over a range is at its ends: `over` takes the samples bracketing the range. Past
-// the rim nothing is shown (0); the last 1% of the rim counts as the rim 1% in (the equidistant
+// the rim up to kDetailReach times it counts as the rim, farther as nothing (0); the last 1%
+// of the rim counts as the rim 1% in (the equidistant
 // view's scale grows without bound at the sphere's antipode). `stamp` changes with the view.
 struct DetailScale {
     static constexpr int kSamples = 64;
-    double px[kSamples + 2] = {};
+    double px[kSamples + 1] = {};
     double step = 1, per_step = 1;
     uint32_t stamp = 0;
     double K = NAN, scale = NAN, R = NAN;
@@ -71,13 +75,12 @@ struct DetailScale {
             px[i] = s * std::fmax(radial, std::isfinite(around) ? around : 0);
             if (!std::isfinite(px[i])) px[i] = 0;
         }
-        px[kSamples + 1] = 0;  // (past the rim)
     }
     // The most pixels a world unit covers over rho in [lo, hi].
     double over(double lo, double hi) const {
         const double a = lo * per_step, b = hi * per_step;
-        if (!(a <= kSamples)) return 0;
-        const int i = static_cast<int>(a), j = b >= kSamples ? kSamples : static_cast<int>(std::ceil(b));
+        if (!(a <= kSamples * kDetailReach)) return 0;
+        const int i = a >= kSamples ? kSamples : static_cast<int>(a), j = b >= kSamples ? kSamples : static_cast<int>(std::ceil(b));
         return std::fmax(px[i], px[j]);
     }
 };

@@ -14,11 +14,13 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "geometry/detail.hpp"
 #include "geometry/geometry.hpp"
 #include "geometry/edge_curve.hpp"
+#include "geometry/screen_map.hpp"
 
 namespace noneuclid::geo {
 
@@ -52,11 +54,21 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
     // description's, if it has one), the vertices the view keeps (local, root and the edges
     // above are then theirs, `count` and `edges` of them), the walk's stack, and the
     // DetailScale stamp they were kept for. Without a tree every vertex is drawn.
+    // (kept and stack in a part of their own, made for a line with a tree alone: a pointer for
+    // every other body, where RAM is short.)
     const DetailTree* tree = nullptr;
-    std::vector<uint32_t> kept;
-    std::vector<int32_t> stack;
+    struct Walk {
+        std::vector<uint32_t> kept;
+        std::vector<int32_t> stack;
+    };
+    std::unique_ptr<Walk> walk_room;
     uint32_t detail_stamp = 0;
     std::size_t count = 0, edges = 0;
+    // A still body's screen points and a zoom level's record (Still), for a cache made to keep
+    // them (render/body_points.hpp: a grid line's); null, not kept: one pointer a body where
+    // RAM is short (the firmware).
+    struct Still;
+    std::unique_ptr<Still> still;
 
     // Sized for body b, its parts that do not depend on K set; not valid until refreshed.
     template <class B>
@@ -72,8 +84,9 @@ struct alignas(kThreadAlign) ShapeCache {  // (a cache line of its own: neighbou
         cos_phi.assign(n, T{}), sin_phi.assign(n, T{}), half_sine.assign(edges, {}), radial.assign(edges, kNotRadial);
         tree = nullptr;
         if constexpr (requires { b.desc->detail; })
-            if (b.desc && !b.desc->detail.empty()) tree = &b.desc->detail;
-        kept.assign(tree ? n : 0, 0), stack.assign(tree ? n : 0, 0);
+            if (b.desc && b.desc->detail && !b.desc->detail->empty()) tree = b.desc->detail.get();
+        walk_room.reset();
+        if (tree) walk_room = std::make_unique<Walk>(Walk{std::vector<uint32_t>(n), std::vector<int32_t>(n)});
         count = n, this->edges = edges;
         set_angles(b);
     }
@@ -139,6 +152,8 @@ private:
     // makes them for every vertex.
     template <class B>
     void refresh_kept(T curvature, const B& b, const DetailScale& view) {
+        std::vector<uint32_t>& kept = walk_room->kept;
+        std::vector<int32_t>& stack = walk_room->stack;
         const std::size_t n = b.local.size();
         const double ref = static_cast<double>(b.local[tree->ref].r);
         const double f = tree->ref_rho > 0 ? ref / tree->ref_rho : 1, px = kDetailTolerancePx;
@@ -193,6 +208,40 @@ private:
         K = curvature, sized = b.sized, valid = true;
         detail_stamp = view.stamp;
     }
+};
+
+// A still body's clipped screen points (render/still_points.hpp), kept with what they were
+// made from, so that a frame in which none of it changed copies them instead of drawing them
+// again; and a zoom level's line's record (world::Body::image_scale): its outline's spots
+// before clipping, as drawn at `record_scale` (the map's scale times image_scale) within a clip
+// circle kRecordReach times the view's, so that the frames of a zoom scale them instead of
+// drawing them again. Room reserved when the scratch is prepared (record: for lines with a tree).
+template <class T>
+struct ShapeCache<T>::Still {
+    struct ScreenKey {
+        T K{}, R{}, scale{}, cx{}, cy{}, facing{}, r{}, theta{};  // (r, theta: the body's centre)
+        int64_t clip = 0;
+        uint32_t shape = 0, sized = 0, detail = 0;
+        Projection projection{};
+        bool operator==(const ScreenKey&) const = default;
+    };
+    std::vector<SubPoint> screen;
+    std::size_t screen_count = 0;
+    ScreenKey screen_key{};
+    bool screen_valid = false;
+    bool screen_scaled = false;  // `screen` was scaled from `record`, not drawn: drawn again once still
+    struct SpotRecord {
+        Spot s;
+        uint8_t op;  // 0 start, 1 a chord's first end, 2 its second, 3 end
+    };
+    std::vector<SpotRecord> record;
+    double record_scale = 0;
+    ScreenKey record_key{};
+    bool record_valid = false;
+    // Which frames of a zoom draw the record again though it is still near enough (the view's
+    // stamp modulo render::kRecordPhases): the lines' redrawing spread over the frames by their
+    // size, so that no frame of a zoom draws them all.
+    uint32_t record_phase = 0;
 };
 
 }  // namespace noneuclid::geo

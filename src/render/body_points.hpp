@@ -5,7 +5,10 @@
 // cannot show a point; draw_screen_points draws such a list.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 #include "geometry/engine.hpp"
@@ -14,6 +17,7 @@
 #include "render/draw_options.hpp"
 #include "render/raster.hpp"
 #include "render/screen_points.hpp"
+#include "render/still_points.hpp"
 #include "world/world.hpp"
 
 namespace noneuclid::render {
@@ -27,10 +31,31 @@ std::size_t body_point_capacity(const W&, const world::Body<typename W::scalar>&
 }
 
 // A cache of the engine's for each of a world's bodies (Cache), made for them.
+// With keep_still, a grid body's cache also keeps its screen points, for the frames in which
+// it is still (body_screen_points): room for them, which a machine short of RAM (the
+// firmware) goes without.
 template <class W>
-void make_shape_caches(const W& world, std::vector<typename W::engine::Cache>& caches) {
+void make_shape_caches(const W& world, std::vector<typename W::engine::Cache>& caches, bool keep_still = true) {
     caches.resize(world.bodies.size());
-    for (std::size_t i = 0; i < caches.size(); ++i) caches[i].make(world.bodies[i]);
+    std::size_t recorded = 0;  // (the room of the records made so far)
+    for (std::size_t i = 0; i < caches.size(); ++i) {
+        caches[i].make(world.bodies[i]);
+        if constexpr (requires { caches[i].still; }) {
+            using Still = typename std::remove_reference_t<decltype(caches[i])>::Still;
+            caches[i].still.reset();
+            if (!keep_still || !world.bodies[i].desc || !world.bodies[i].desc->grid) continue;
+            caches[i].still = std::make_unique<Still>();
+            caches[i].still->screen.reserve(body_point_capacity(world, world.bodies[i]));
+            if (!caches[i].tree) continue;
+            // The records dealt out to the phases (record_phase) in turn by kRecordPhaseRoom of
+            // their room: whatever part of the bodies is shown (a zoom level), its lines spread
+            // over all phases.
+            const std::size_t n = record_capacity(world, world.bodies[i]);
+            caches[i].still->record.reserve(n);
+            caches[i].still->record_phase = static_cast<uint32_t>((recorded + n / 2) / kRecordPhaseRoom % kRecordPhases);
+            recorded += n;
+        }
+    }
 }
 
 // Whether any of the caches is of a line simplified for the view (geometry/detail.hpp).
@@ -60,6 +85,10 @@ std::size_t body_screen_points(const W& world, const world::Body<typename W::sca
                                const DrawOptions& o, geo::Polar<typename W::scalar>* verts,
                                geo::Vec3<typename W::scalar>* vecs, SubPoint* out) {
     if (b.local.empty()) return 0;
+    using Cache = typename W::engine::Cache;
+    if constexpr (requires(Cache& c) { c.still; }) {
+        if (shape.still) return still_screen_points(world, b, shape, *shape.still, m, o, verts, vecs, out);
+    }
     ClipSink sink(m, out);
     W::engine::outline(world.K, b, shape, m, o.projection, verts, vecs, sink);
     return sink.count();

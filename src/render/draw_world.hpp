@@ -52,8 +52,10 @@ struct DrawScratch {
     // the world's frame `banded`, so that the later bands skip the bodies that end above them.
     std::vector<int32_t> lowest;
     long banded = -1;
+    // keep_still: grid bodies' screen points kept for the frames in which they are still
+    // (make_shape_caches; the firmware goes without).
     template <class W>
-    void prepare(const W& world) {
+    void prepare(const W& world, bool keep_still = true) {
         std::size_t most = 1, most_v = 1;
         for (const auto& b : world.bodies) {
             most = std::max(most, body_point_capacity(world, b));
@@ -62,7 +64,7 @@ struct DrawScratch {
         points.resize(most);
         vertices.resize(most_v);
         vectors.resize(most_v);
-        make_shape_caches(world, shapes);
+        make_shape_caches(world, shapes, keep_still);
         any_detail = render::any_detail(shapes);
         fill.prepare(world, 1);
         lowest.assign(world.bodies.size(), INT32_MAX);

@@ -20,6 +20,10 @@ struct alignas(geo::kThreadAlign) Body {
     const SceneBody* desc = nullptr;   // name, colour, closed, tessellation, kind
     uint32_t shape = 0;    // counts the changes of `local` (a game's new asteroid): caches follow it
     uint32_t sized = 0;    // counts the changes of local's rho alone (a zoom, Scene::zoom): the same
+    // A zoom level's body shown while K = z (World::show_zoom): its picture is a similarity of
+    // itself from such frame to frame, its projected radii F(angle) * image_scale, image_scale
+    // = 1 / sqrt(z) (render/still_points.hpp scales one frame's into the next). 0: not so.
+    float image_scale = 0;
     uint32_t serial = 0;   // a game's asteroid or bullet: its number ("asteroid 12"); 0 otherwise
     bool active = true;    // in the world: moved, drawn, dumped, hit (a game's spare slots are not)
     bool hidden = false;   // in the world but not drawn this frame (the respawned ship blinking)

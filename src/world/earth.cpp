@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
 #include "world/earth_data.hpp"
@@ -66,7 +67,7 @@ constexpr double kBendPx = 1, kMaxStep = 0.5, kCullStep = 0.1, kMinArc = 3 * kDe
 constexpr double kSimplifyPx = 0.5, kDiscPx = 240;
 // A body's vertices at most (Budget::kVerticesPerBody is far above it): a longer line goes on
 // in a new body from the same point.
-constexpr std::size_t kPieceVertices = 4000;
+constexpr std::size_t kPieceVertices = 1000;
 // Zoomed in (--view), the lines are kept to the view: a line ends at its first vertex past
 // kCullMargin outside the limit circle, and an edge whose every point lies farther (both ends
 // farther than half its length) is not halved at all.
@@ -216,7 +217,7 @@ private:
             b.grid = true;
             b.tessellation = 2;
             b.vertices = std::move(piece_);
-            if (frame_.per_view) b.detail = line_tree(b.vertices, closed, frame_.scale, kMaxStep);
+            if (frame_.per_view) b.detail = std::make_shared<const geo::DetailTree>(line_tree(b.vertices, closed, frame_.scale, kMaxStep));
             scene_.bodies.push_back(std::move(b));
         }
         piece_.clear();

@@ -55,8 +55,9 @@ struct SceneBody {
     };
     std::vector<Vertex> vertices;
     // A line drawn simplified for each view (geometry/detail.hpp: the earth scene's lines);
-    // empty: every vertex drawn.
-    geo::DetailTree detail;
+    // none or empty: every vertex drawn. (Shared: a scene's copies share its trees, and a body
+    // without one pays a pointer.)
+    std::shared_ptr<const geo::DetailTree> detail;
     bool controlled = false;  // the ship: thrust and turn act on it
     bool grid = false;        // part of a grid (drawn dimmer); otherwise an ordinary body
     BodyKind role = BodyKind::body;  // asteroid or bullet: a game's slot (world/game.hpp)

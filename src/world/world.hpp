@@ -306,7 +306,10 @@ private:
         const ZoomLevel& l = zm.levels[pick];
         const double f = std::sqrt(l.curvature / zoom_);
         for (const ZoomLevel& o : zm.levels)
-            for (int b = o.first; b < o.first + o.count; ++b) bodies[b].active = &o == &l;
+            for (int b = o.first; b < o.first + o.count; ++b) {
+                bodies[b].active = &o == &l;
+                bodies[b].image_scale = &o == &l && !bent ? static_cast<float>(1 / std::sqrt(zoom_)) : 0.0f;
+            }
         for (int b = l.first; b < l.first + l.count; ++b) {
             Body<T>& body = bodies[b];
             const std::vector<SceneBody::Vertex>& v = scene_.bodies[b].vertices;

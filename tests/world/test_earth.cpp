@@ -200,10 +200,10 @@ long sound_trees(const world::Scene& s, double lat0, double lon0) {
     long checked = 0;
     for (const world::SceneBody& b : s.bodies) {
         if (b.controlled) continue;
-        const geo::DetailTree& t = b.detail;
+        EXPECT_TRUE(b.detail && !b.detail->empty()) << b.name;
+        if (!b.detail || b.detail->empty()) continue;
+        const geo::DetailTree& t = *b.detail;
         const int32_t n = static_cast<int32_t>(b.vertices.size());
-        EXPECT_FALSE(t.empty()) << b.name;
-        if (t.empty()) continue;
         std::vector<int> seen(static_cast<std::size_t>(n), 0);
         auto at = [&](int32_t i) { return place(lat0, lon0, b.vertices[i % n].rho, b.vertices[i % n].phi_deg); };
         std::vector<std::pair<int32_t, std::pair<int32_t, int32_t>>> todo;  // node, bracket
@@ -256,6 +256,7 @@ TEST(Earth, EveryCoastPointLiesWithinHalfAPixelOfTheSimplifiedLine) {
         EXPECT_TRUE(world::within_ranges(s, why)) << why;
         long coast = 0, longest = 0, ships = 0;
         double worst = 0;
+        const world::SceneBody* previous = nullptr;
         for (const world::SceneBody& b : s.bodies) {
             if (b.controlled) {  // the ship, at O, to fly over the Earth
                 EXPECT_TRUE(!b.grid && b.r == 0 && b.speed == 0) << b.name;
@@ -263,7 +264,13 @@ TEST(Earth, EveryCoastPointLiesWithinHalfAPixelOfTheSimplifiedLine) {
                 continue;
             }
             EXPECT_TRUE(b.grid && b.r == 0 && b.facing_deg == 0 && b.speed == 0) << b.name;
-            if (b.name.rfind("coast", 0) == 0) coast += static_cast<long>(b.vertices.size());
+            if (b.name.rfind("coast", 0) == 0) {  // (a long line's next piece starts on its last point: once)
+                const bool goes_on = previous && !previous->vertices.empty() && !b.vertices.empty() &&
+                                     previous->vertices.back().rho == b.vertices.front().rho &&
+                                     previous->vertices.back().phi_deg == b.vertices.front().phi_deg;
+                coast += static_cast<long>(b.vertices.size()) - (goes_on ? 1 : 0);
+                previous = &b;
+            }
             longest = std::max(longest, static_cast<long>(b.vertices.size()));
             for (std::size_t i = 0; i + 1 < b.vertices.size(); ++i) {
                 EXPECT_LE(b.vertices[i].rho, kPi + 1e-12);
