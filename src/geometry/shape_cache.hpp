@@ -226,7 +226,6 @@ struct ShapeCache<T>::Still {
         bool operator==(const ScreenKey&) const = default;
     };
     std::vector<SubPoint> screen;
-    std::size_t screen_count = 0;
     ScreenKey screen_key{};
     bool screen_valid = false;
     bool screen_scaled = false;  // `screen` was scaled from `record`, not drawn: drawn again once still

@@ -5,10 +5,8 @@
 // cannot show a point; draw_screen_points draws such a list.
 #pragma once
 
-#include <algorithm>
 #include <cstddef>
 #include <memory>
-#include <type_traits>
 #include <vector>
 
 #include "geometry/engine.hpp"
@@ -41,7 +39,7 @@ void make_shape_caches(const W& world, std::vector<typename W::engine::Cache>& c
     for (std::size_t i = 0; i < caches.size(); ++i) {
         caches[i].make(world.bodies[i]);
         if constexpr (requires { caches[i].still; }) {
-            using Still = typename std::remove_reference_t<decltype(caches[i])>::Still;
+            using Still = typename W::engine::Cache::Still;
             caches[i].still.reset();
             if (!keep_still || !world.bodies[i].desc || !world.bodies[i].desc->grid) continue;
             caches[i].still = std::make_unique<Still>();

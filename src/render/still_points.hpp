@@ -12,6 +12,7 @@
 // first still frame after a zoom draws exactly again.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -102,13 +103,13 @@ std::size_t still_screen_points(const W& world, const world::Body<typename W::sc
                                         b.sized,  m.detail ? m.detail->stamp : 0u, o.projection};
     auto keep = [&](std::size_t n, bool scaled) {
         still.screen.assign(out, out + n);  // (within the room reserved: no allocation)
-        still.screen_count = n, still.screen_key = key, still.screen_valid = true, still.screen_scaled = scaled;
+        still.screen_key = key, still.screen_valid = true, still.screen_scaled = scaled;
         return n;
     };
     const bool same = still.screen_valid && still.screen_key == key;
     if (same && !still.screen_scaled) {
-        std::copy(still.screen.begin(), still.screen.begin() + static_cast<std::ptrdiff_t>(still.screen_count), out);
-        return still.screen_count;
+        std::copy(still.screen.begin(), still.screen.end(), out);
+        return still.screen.size();
     }
     const bool similar = b.image_scale > 0 && still.record.capacity() > 0;
     if (similar && !same && still.record_valid) {  // a zoom's frame: the record scaled, if near enough

@@ -305,10 +305,11 @@ private:
         if (pick < 0 || (pick == shown_level_ && zoom_ == shown_zoom_)) return;
         const ZoomLevel& l = zm.levels[pick];
         const double f = std::sqrt(l.curvature / zoom_);
+        const float image_scale = bent ? 0.0f : static_cast<float>(1 / std::sqrt(zoom_));
         for (const ZoomLevel& o : zm.levels)
             for (int b = o.first; b < o.first + o.count; ++b) {
                 bodies[b].active = &o == &l;
-                bodies[b].image_scale = &o == &l && !bent ? static_cast<float>(1 / std::sqrt(zoom_)) : 0.0f;
+                bodies[b].image_scale = &o == &l ? image_scale : 0.0f;
             }
         for (int b = l.first; b < l.first + l.count; ++b) {
             Body<T>& body = bodies[b];
