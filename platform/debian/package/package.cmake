@@ -50,8 +50,11 @@ execute_process(COMMAND date -u -R -d @${NONEUCLID_SOURCE_DATE_EPOCH} OUTPUT_VAR
                 OUTPUT_STRIP_TRAILING_WHITESPACE)
 execute_process(COMMAND git -C ${PROJECT_SOURCE_DIR} rev-parse --short HEAD OUTPUT_VARIABLE NONEUCLID_GIT_COMMIT
                 OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
-if(NOT NONEUCLID_GIT_COMMIT)
-    set(NONEUCLID_GIT_COMMIT "a source tree outside git")
+# (The changelog's line stays within lintian's 80 columns either way.)
+if(NONEUCLID_GIT_COMMIT)
+    set(NONEUCLID_GIT_COMMIT "commit ${NONEUCLID_GIT_COMMIT}")
+else()
+    set(NONEUCLID_GIT_COMMIT "a tree outside git")
 endif()
 set(NONEUCLID_DEB_MAINTAINER "noneuclid maintainers <maintainers@users.noreply.h-seed-35e1c005.example>"
     CACHE STRING "The Debian package's Maintainer field")
