@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
-#include "render/palette.hpp"
 #include "lang/lang.hpp"
 #include "world/engines.hpp"
+#include "world/palette_names.hpp"
 #include "world/quote.hpp"
 #include "files/text_file.hpp"
 #include "files/toml_reader.hpp"
@@ -77,9 +77,9 @@ void read_board(const toml::table& root, Board& b) {
         b.one_button = d.boolean("one_button", b.one_button);
         b.sound = d.boolean("sound", b.sound);
         b.palette = d.string("palette", b.palette);
-        render::Palette palette{};
-        if (!render::parse_palette(b.palette, palette))
-            throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(render::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
+        world::Palette palette{};
+        if (!world::parse_palette(b.palette, palette))
+            throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(world::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
         b.language = d.string("language", b.language);
         lang::Language language{};
         if (!b.language.empty() && !lang::parse_language(b.language, language))

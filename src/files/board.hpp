@@ -61,7 +61,7 @@ struct Board {
     std::string projection = "equidistant";
     bool antialias = false;
     bool hud = true;
-    std::string palette = "scene";  // render/palette.hpp's names
+    std::string palette = "scene";  // world/palette_names.hpp's names
     bool large_hud = false;
     std::string language;  // en, de, fr ("" the locale's)
     bool one_button = false;  // fire alone plays (docs/accessibility.md)
