@@ -65,7 +65,7 @@ void read_board(const toml::table& root, Board& b) {
         b.scene = d.plain_string("scene", b.scene);
         b.engine = d.string("engine", b.engine);
         world::EngineKind engine;
-        if (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine))
+        if (!b.engine.empty() && (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine)))
             throw Bad{t->get("engine")->source(), "display: expected engine = " + world::or_list(world::engine_names(true), true) + ", found \"" + world::printable(b.engine) + "\""};
         b.projection = d.string("projection", b.projection);
         geo::Projection projection{};

@@ -57,7 +57,7 @@ struct Board {
     std::string device = "/dev/fb0";
     double fps = 60;
     std::string scene = "kiosk";
-    std::string engine = "fixed";
+    std::string engine;  // "": none named (the kind of world's first, fixed for a world of constant K)
     std::string projection = "equidistant";
     bool antialias = false;
     bool hud = true;
