@@ -13,19 +13,20 @@
 #include "board.hpp"
 #include "heap.hpp"
 #include "render/canvas.hpp"
-#include "render/draw_world.hpp"
 #include "render/font.hpp"
 #include "render/hud.hpp"
 #include "render/palette.hpp"
 #include "render/play.hpp"
+#include "kinds/kinds.hpp"
 #include "world/scene.hpp"
-#include "world/world.hpp"
 
 namespace noneuclid::mcu {
 namespace {
 
-using World = world::World<fx::fixed>;
-using Scratch = render::DrawScratch<World::scalar, World::engine>;
+// The firmware's kind of world: the world of constant K on the fixed engine (kinds/kinds.hpp;
+// the scene is checked to be of this kind, whose Capabilities say firmware).
+using Kind = kinds::Constant<world::World<fx::fixed>>;
+using World = Kind::World;
 constexpr double kDt = 1.0 / 60;  // world seconds a step: the program's
 
 // The picture, drawn a band of rows at a time (Canvas::band), each band presented when drawn:
@@ -99,7 +100,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     static Recording setup;  // (static: its events are kilobytes, the stack is small)
     if (!board::start(setup)) board::finish(false, "noneuclid firmware: no start.");
     char why[160] = "";
-    World* made = nullptr;
+    Kind* made = nullptr;
     {  // The scene is copied into the world: its own copy is freed before the buffers are made.
         world::Scene scene;
         std::string reason;
@@ -107,12 +108,20 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
             std::snprintf(why, sizeof why, "noneuclid firmware: no built-in scene '%s'.", setup.scene);
             board::finish(false, why);
         }
-        made = new World(scene);
+        kinds::KindChoice kind;
+        std::string reason_kind;
+        constexpr world::EngineKind fixed = world::engine_named("fixed");
+        if (!kinds::choose_kind(scene, &fixed, kind, reason_kind) || !kinds::kind_can(kind.kind).firmware) {
+            std::snprintf(why, sizeof why, "noneuclid firmware: the scene '%s' is not a kind of world it runs.", setup.scene);
+            board::finish(false, why);
+        }
+        made = new Kind(scene);
     }
-    World& w = *made;
-    static Scratch scratch;
-    scratch.prepare(w, false);  // (no room kept for still bodies' points: RAM is short)
-    scratch.backdrop.reserve(board::kHeight);  // (the backdrop's rows kept: the same every frame)
+    Kind& kind = *made;
+    World& w = kind.world;
+    // (No room kept for still bodies' points: RAM is short; the backdrop's rows kept: the same
+    // every frame.)
+    kind.prepare_one_thread(false).backdrop.reserve(board::kHeight);
     View o{draw_options(setup), setup.hud, {setup.best}};
     const std::size_t allocations = heap_allocations();
 
@@ -121,7 +130,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
         for (int y0 = 0; y0 < board::kHeight; y0 += kBandRows) {  // (each band: what the whole frame has there)
             const auto canvas = render::Canvas::band(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2,
                                                      render::PixelFormat::rgb565(), y0, y0 + kBandRows);
-            render::draw_world(canvas, w, o.draw, scratch);
+            kind.draw(canvas, o.draw);
             if (o.hud) draw_hud(canvas, w, o, setup.scene);
             if (!board::present(g_pixels, y0, y0 + kBandRows, f)) board::finish(false, "noneuclid firmware: the display failed.");
         }

@@ -243,7 +243,8 @@ EMSCRIPTEN_KEEPALIVE const char* nw_projection() {
 // The lesson's step playing, from 1 (0: no lesson).
 EMSCRIPTEN_KEEPALIVE int nw_lesson_step() { return g_run && g_run->lesson ? g_run->lesson->step() + 1 : 0; }
 EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
-    return g_run ? noneuclid::world::engine_name(g_run->options.engine) : "";
+    // (compose_run set it to the engine the kind of world runs on)
+    return g_run && g_run->options.engine ? noneuclid::world::engine_name(*g_run->options.engine) : "";
 }
 // 1 when the run's scene has the game (fire starts it and fires): the page shows the fire
 // button and mentions Space only then.

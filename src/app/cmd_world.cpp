@@ -30,7 +30,7 @@ int dump_command(int argc, char** argv, int first) {
     Options plain = o;
     plain.attract = 0, plain.threads = 1, plain.hud = false;
     const std::unique_ptr<Session> s =
-        make_session(o.engine, scene, session_options(plain, scene, o.legend), render::builtin_font(), nullptr);
+        make_session(world_kind(o, scene), scene, session_options(plain, scene, o.legend), render::builtin_font(), nullptr);
     ScriptPlayer player(script.events);
     std::string line;
     s->start(player);

@@ -373,7 +373,8 @@ void apply_settings(const Script& script, Options& o, Command c) {
 
 void apply_board(const files::Board& b, Options& o) {
     o.scene = b.scene;
-    if (!world::parse_engine(b.engine, o.engine)) o.engine = world::kDefaultEngine;  // the board file was checked when read
+    world::EngineKind engine;
+    if (world::parse_engine(b.engine, engine)) o.engine = engine;  // (the board file was checked when read; "" names none)
     o.projection = parse_projection("the board's projection", b.projection);
     o.aa = b.antialias;
     o.hud = b.hud;

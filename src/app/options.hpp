@@ -5,6 +5,7 @@
 // recording's, then the command line's, each over the last.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,7 @@ struct Options {
     std::string scene = "kiosk";
     bool has_curvature = false;
     double curvature = 0;
-    world::EngineKind engine = world::kDefaultEngine;
+    std::optional<world::EngineKind> engine;  // none given: the kind of world's first (kinds/kinds.hpp)
     std::string actions;
     world::SceneParams params;
     long frames = 60;           // run: 0, until closed

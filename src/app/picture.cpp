@@ -27,7 +27,7 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
     Options plain = o;
     plain.attract = 0, plain.threads = 1;
     const SessionOptions so = session_options(plain, scene, o.legend);
-    const std::unique_ptr<Session> s = make_session(o.engine, scene, so, font, nullptr);
+    const std::unique_ptr<Session> s = make_session(world_kind(o, scene), scene, so, font, nullptr);
     const uint32_t background = o.format.pack(so.draw.background);
 
     std::vector<uint8_t> trail;

@@ -1,4 +1,4 @@
-// Session<W> for each engine (see session.hpp).
+// A Session for each kind of world on each of its engines (kinds/kinds.hpp; see session.hpp).
 #include "app/session.hpp"
 
 #include <cmath>
@@ -7,14 +7,11 @@
 #include "app/one_button.hpp"
 #include "app/recorder.hpp"
 #include "geometry/local_frame.hpp"
+#include "kinds/kinds.hpp"
 #include "render/hud.hpp"
 #include "render/measure_panel.hpp"
-#include "render/parallel_frame.hpp"
 #include "render/play.hpp"
 #include "render/worker_pool.hpp"
-#include "uneven/draw.hpp"
-#include "uneven/dump.hpp"
-#include "world/earth.hpp"
 
 namespace noneuclid::app {
 namespace {
@@ -28,30 +25,14 @@ render::Rgb curvature_tint(double K) {
     return {mix(0), mix(1), mix(2)};
 }
 
-// What draws a world: the engines' scratch (render/draw_world.hpp, parallel_frame.hpp) for a
-// world of constant K, uneven::Drawing (one thread) for an uneven world.
-template <class W>
-constexpr bool kUneven = requires { W::kUneven; };
-struct NoScratch {};
-template <class W>
-struct Scratch {
-    using one = render::DrawScratch<typename W::scalar, typename W::engine>;
-    using parallel = render::ParallelScratch<typename W::scalar, typename W::engine>;
-};
-template <>
-struct Scratch<uneven::World> {
-    using one = uneven::Drawing;
-    using parallel = NoScratch;
-};
-
-template <class W>
-class EngineSession final : public Session {
+template <kinds::WorldKind WK>
+class KindSession final : public Session {
 public:
-    using T = typename W::scalar;
+    using T = typename WK::World::scalar;
 
-    EngineSession(const world::Scene& scene, const SessionOptions& o, const render::Font& font, Recorder* recorder,
+    KindSession(const world::Scene& scene, const SessionOptions& o, const render::Font& font, Recorder* recorder,
                   GameOverSink* scores)
-        : world_(scene),
+        : kind_(scene),
           options_(o),
           font_(font),
           recorder_(recorder),
@@ -61,9 +42,7 @@ public:
           autopilot_(o.attract, scene.curvature_rate),
           dt_(o.dt) {
         sound_.muted = o.muted;
-        scratch_.prepare(world_);
-        if constexpr (!kUneven<W>)
-            if (pool_.size() > 1) parallel_.prepare(world_, pool_);
+        kind_.prepare(pool_);
     }
 
     void queue(world::InputEvent e) override {
@@ -96,8 +75,7 @@ public:
     }
 
     bool mark_at(double x, double y, int width, int height) override {
-        if constexpr (kUneven<W>)  // (a tap marks the chart view: it is the stereographic projection)
-            if (!uneven::is_chart_view(options_.draw.projection)) return false;
+        if (!WK::marks_in(options_.draw.projection)) return false;
         const double K = static_cast<double>(world_.K), R = static_cast<double>(world_.R);
         const geo::Projection p = options_.draw.projection;
         const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p);
@@ -137,12 +115,7 @@ public:
         if (layers == Layers::backdrop_and_grids) o.bodies = false;
         if (layers == Layers::grids_tinted)
             o.bodies = false, o.tint_grids = true, o.grid_tint = curvature_tint(static_cast<double>(world_.K));
-        if constexpr (kUneven<W>)
-            scratch_.draw(c, world_, o, backdrop);
-        else if (pool_.size() > 1)
-            render::draw_world(c, world_, o, parallel_, pool_, backdrop);
-        else
-            render::draw_world(c, world_, o, scratch_, backdrop);
+        kind_.draw(c, o, backdrop, pool_);
     }
 
     void draw_hud(const render::Canvas& c) override {
@@ -156,11 +129,7 @@ public:
         info.K = static_cast<double>(world_.K);
         info.fps = options_.show_fps ? fps_ : 0;
         info.scene = options_.scene_name.c_str();
-        info.projection = render::projection_words(options_.draw.projection, options_.language);
-        if constexpr (kUneven<W>)
-            info.projection = lang::text(uneven::is_chart_view(options_.draw.projection) ? lang::Text::view_chart
-                                                                                          : lang::Text::view_inhabitant,
-                                         options_.language);
+        info.projection = WK::view_words(options_.draw.projection, options_.language);
         const bool attract = autopilot_.active() || replayed_attract_;
         using lang::Text;
         info.controls = attract ? lang::text(world_.game().on() ? Text::legend_attract_game : Text::legend_attract,
@@ -168,7 +137,7 @@ public:
                                 : options_.legend.c_str();
         info.game = render::hud_game(world_, best_);
         char note[120];
-        if (zoom_note(note, sizeof note)) info.note = note;
+        if (kind_.note(note, sizeof note, options_.language)) info.note = note;
         info.large = options_.large_hud;
         info.scale = options_.hud_scale;
         info.caption = options_.caption.c_str();
@@ -180,7 +149,7 @@ public:
     void dump(int width, int height, std::string& line) const override {
         files::DumpOptions o;
         o.width = width, o.height = height, o.projection = options_.draw.projection;
-        files::dump_frame(world_, o, line);
+        kind_.dump(o, line);
     }
 
     double time() const override { return world_.time; }
@@ -200,21 +169,6 @@ private:
     OneButton one_button_;
     long fire_presses_ = 0, presses_ = 0;
 
-    // The zoom's line on the HUD (the earth scene): the screen's radius in km, and where the
-    // zoom ends, that it ends there (docs/earth.md).
-    bool zoom_note(char* out, std::size_t size) const {
-        if constexpr (kUneven<W>) {  // an uneven world's line: its bumps' gain
-            std::snprintf(out, size, lang::text(lang::Text::bump_gain, options_.language), world_.gain());
-            return true;
-        }
-        const auto z = world_.zoom();
-        if (!z.on) return false;
-        const double km = 3.14159265358979323846 * world::kEarthRadiusKm * std::sqrt(z.z);
-        using lang::Text;
-        std::snprintf(out, size, lang::text(z.least ? Text::view_km_least : z.most ? Text::view_km_most : Text::view_km,
-                                            options_.language), km);
-        return true;
-    }
     void flush() {
         for (int i = 0; i < queued_; ++i) control(queue_[i]);
         queued_ = 0;
@@ -247,18 +201,10 @@ private:
             record(e.pressed ? ScriptEvent::press : ScriptEvent::release, e.control);
         if (done != render::Applied::not_action || !e.pressed) return;
         switch (e.control) {
-            case world::Control::projection: {
-                if constexpr (kUneven<W>) {  // its two views, in turn
-                    options_.draw.projection = uneven::is_chart_view(options_.draw.projection)
-                                                   ? geo::Projection::azimuthal_equidistant
-                                                   : geo::Projection::stereographic;
-                    record(ScriptEvent::tap, e.control);
-                    break;
-                }
-                options_.draw.projection = render::next_projection(options_.draw.projection);
+            case world::Control::projection:  // the kind's next view
+                options_.draw.projection = WK::next_view(options_.draw.projection);
                 record(ScriptEvent::tap, e.control);
                 break;
-            }
             case world::Control::hud:
                 options_.hud = !options_.hud;
                 record(ScriptEvent::tap, e.control);
@@ -332,7 +278,8 @@ private:
             }
     }
 
-    W world_;
+    WK kind_;
+    typename WK::World& world_ = kind_.world;
     SessionOptions options_;
     const render::Font& font_;
     Recorder* recorder_;
@@ -341,8 +288,6 @@ private:
     render::WorkerPool pool_;
     Autopilot autopilot_;
     double dt_;  // world seconds a step: the clock (World::step)
-    typename Scratch<W>::one scratch_;
-    typename Scratch<W>::parallel parallel_;
     world::InputEvent queue_[kQueue];
     int queued_ = 0;
     bool user_held_[world::kControlCount] = {};
@@ -353,12 +298,10 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
+std::unique_ptr<Session> make_session(kinds::KindChoice kind, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores) {
-    if (!scene.bumps.empty())  // an uneven world: its own engine, in double (docs/uneven.md)
-        return std::make_unique<EngineSession<uneven::World>>(scene, options, font, recorder, scores);
-    return world::with_engine(engine, [&]<class W>(std::type_identity<W>) -> std::unique_ptr<Session> {
-        return std::make_unique<EngineSession<W>>(scene, options, font, recorder, scores);
+    return kinds::with_kind(kind, [&]<class WK>(std::type_identity<WK>) -> std::unique_ptr<Session> {
+        return std::make_unique<KindSession<WK>>(scene, options, font, recorder, scores);
     });
 }
 

@@ -1,4 +1,4 @@
-// One running world and how it is shown: the world on an engine, the view (projection, HUD),
+// One running world and how it is shown: the world (any kind, kinds/kind.hpp, on its engine), the view (projection, HUD),
 // the controls in (live buttons and keys, scripted events, the attract-mode autopilot), one
 // step of world time and one drawn frame out. Every display's frame loop (app/frame_loop.hpp)
 // and the batch commands (render, dump) run a Session, so a key does the same thing
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "app/autopilot.hpp"
-#include "world/engines.hpp"
+#include "kinds/kinds.hpp"
 #include "app/script.hpp"
 #include "app/sound.hpp"
 #include "render/canvas.hpp"
@@ -111,9 +111,10 @@ public:
     virtual const SessionOptions& options() const = 0;  // as now (P and H change them)
 };
 
-// A session of `scene` on `engine`, its drawing threads started. `font` (the HUD's),
-// `recorder` and `scores` (both may be null) must outlive it.
-std::unique_ptr<Session> make_session(world::EngineKind engine, const world::Scene& scene, const SessionOptions& options,
+// A session of `scene` as the kind of world chosen for it (kinds/kinds.hpp, choose_kind), its
+// drawing threads started. `font` (the HUD's), `recorder` and `scores` (both may be null) must
+// outlive it.
+std::unique_ptr<Session> make_session(kinds::KindChoice kind, const world::Scene& scene, const SessionOptions& options,
                                       const render::Font& font, Recorder* recorder, GameOverSink* scores = nullptr);
 
 }  // namespace noneuclid::app

@@ -37,6 +37,15 @@ world::Scene load_scene(const Options& o) {
     return scene;
 }
 
+kinds::KindChoice world_kind(const Options& o, const world::Scene& scene) {
+    kinds::KindChoice kind;
+    std::string why;
+    if (!kinds::choose_kind(scene, o.engine ? &*o.engine : nullptr, kind, why))
+        usage_error(o.scene + ": " + why + ": leave --engine out (it runs on the " +
+                    world::engine_name(kinds::kind_engines_first(kind.kind)) + " engine then).");
+    return kind;
+}
+
 platform::LoadedFont load_font(const Options& o) {
     platform::LoadedFont font;
     std::string error;
@@ -63,7 +72,7 @@ void record_settings(Recorder& rec, const Options& o, const std::string& display
         if (o.params.tissot) rec.setting("tissot", "on");
     }
     if (o.has_curvature) rec.setting("curvature", std::to_string(o.curvature));
-    rec.setting("engine", world::engine_name(o.engine));
+    if (o.engine) rec.setting("engine", world::engine_name(*o.engine));
     rec.setting("projection", geo::projection_name(o.projection));
     rec.setting("aa", o.aa ? "on" : "off");
     rec.setting("hud", o.hud ? "on" : "off");
@@ -139,12 +148,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.language = resolve_language(o);
     using lang::Text;
     const bool keys = legend == "keys";
-    // (The kiosk's fire button does something only in the game or with a scene's instruments.)
-    const bool fire = scene.game.on || !scene.measures.empty();
-    Text words = scene.zoom.on() ? (keys ? Text::legend_zoom_keys : Text::legend_zoom_buttons)
-                                 : (keys ? Text::legend_keys : fire ? Text::legend_buttons : Text::legend_buttons_no_fire);
-    if (keys && !scene.bumps.empty())  // (an uneven world: P its two views, < > its bumps)
-        words = scene.game.on ? Text::legend_uneven_game_keys : Text::legend_uneven_keys;
+    Text words = kinds::with_kind(world_kind(o, scene), [&]<class WK>(std::type_identity<WK>) { return WK::legend(keys, scene); });
     if (o.one_button) words = scene.game.on ? Text::legend_one_button_game : Text::legend_one_button;
     so.legend = lang::text(words, so.language);
     so.attract.idle_seconds = o.attract;

@@ -20,6 +20,9 @@ world::Scene load_scene(const Options& o);
 // The HUD's font (o.font: "", "builtin" or a file); a font asked for that cannot be read is a
 // UsageError.
 platform::LoadedFont load_font(const Options& o);
+// The kind of world that runs `scene` (kinds/kinds.hpp) on o's engine, or the kind's first if o
+// names none; a kind without the engine named is a UsageError naming the kind's engines.
+kinds::KindChoice world_kind(const Options& o, const world::Scene& scene);
 // The font as a setting: "builtin" or its file.
 std::string font_setting(const platform::LoadedFont& f);
 // The settings a recording starts with (o's, with the legend resolved): with them

@@ -93,12 +93,15 @@ nw_status make_world(const char* function, world::Scene& scene, world::EngineKin
     std::string why;
     if (!world::within_budget(scene, why) || !world::within_ranges(scene, why))
         return fail(NW_ERR_SCENE, std::string(function) + ": the scene: " + why + ".");
-    if (!scene.bumps.empty())  // (an uneven world, src/uneven: not in this interface's version yet)
-        return fail(NW_ERR_SCENE, std::string(function) +
-                                      ": the scene has bumps (an uneven world), which this interface does not run yet: "
-                                      "use a scene without [[bump]] tables.");
+    kinds::KindChoice kind;
+    kinds::choose_kind(scene, nullptr, kind, why);  // (its kind first: NULL names the interface's default engine)
+    if (!kinds::kind_can(kind.kind).c_interface)  // (the uneven world: not in this interface's version yet)
+        return fail(NW_ERR_SCENE, std::string(function) + ": the scene has bumps, " + kinds::kind_help(kind.kind) +
+                                      ", which this interface does not run yet: use a scene without [[bump]] tables.");
+    if (!kinds::choose_kind(scene, &engine, kind, why))
+        return fail(NW_ERR_SCENE, std::string(function) + ": " + why + ".");
     auto w = std::make_unique<nw_world>();
-    w->world = capi::make_world_handle(engine, scene);
+    w->world = capi::make_world_handle(kind, scene);
     const render::PaletteFrame frame = render::palette_frame(w->draw.palette);
     w->draw.background = frame.background, w->draw.outside = frame.outside, w->draw.rim = frame.rim;
     *out = w.release();

@@ -1,11 +1,11 @@
-// WorldHandle for each engine (see world_handle.hpp).
+// A WorldHandle for each kind of world the C interface runs, on each engine (see world_handle.hpp).
 #include "capi/world_handle.hpp"
 
 #include <cstdio>
 #include <vector>
 
 #include "files/dump.hpp"
-#include "render/draw_world.hpp"
+#include "render/worker_pool.hpp"
 #include "render/play.hpp"
 
 namespace noneuclid::capi {
@@ -21,13 +21,13 @@ void copy_text(char* out, std::size_t size, const std::string& s) {
     out[n] = '\0';
 }
 
-template <class W>
-class EngineWorld final : public WorldHandle {
+template <kinds::WorldKind WK>
+class KindWorld final : public WorldHandle {
 public:
-    using T = typename W::scalar;
+    using T = typename WK::World::scalar;
 
-    explicit EngineWorld(const world::Scene& scene) : world_(scene) {
-        scratch_.prepare(world_);
+    explicit KindWorld(const world::Scene& scene) : kind_(scene) {
+        kind_.prepare(one_thread_);
         shown_.reserve(world_.bodies.size());
         list_bodies();
     }
@@ -47,7 +47,7 @@ public:
     }
 
     void draw(const render::Canvas& c, const render::DrawOptions& o) override {
-        render::draw_world(c, world_, o, scratch_);
+        kind_.draw(c, o, true, one_thread_);
     }
 
     int body_count() const override { return static_cast<int>(shown_.size()); }
@@ -100,8 +100,9 @@ private:
             if (world_.bodies[i].active) shown_.push_back(i);
     }
 
-    W world_;
-    render::DrawScratch<T, typename W::engine> scratch_;
+    WK kind_;
+    typename WK::World& world_ = kind_.world;
+    render::WorkerPool one_thread_{1};
     std::vector<std::size_t> shown_;
 };
 
@@ -111,9 +112,11 @@ bool capi_engine(world::EngineKind engine) {
     return engine == world::engine_named("fixed") || engine == world::engine_named("double");
 }
 
-std::unique_ptr<WorldHandle> make_world_handle(world::EngineKind engine, const world::Scene& scene) {
-    if (engine == world::engine_named("double")) return std::make_unique<EngineWorld<world::World<double>>>(scene);
-    return std::make_unique<EngineWorld<world::World<fx::fixed>>>(scene);
+std::unique_ptr<WorldHandle> make_world_handle(kinds::KindChoice kind, const world::Scene& scene) {
+    std::unique_ptr<WorldHandle> made;  // (none for a kind the C interface does not run)
+    kinds::with_kind_that_can<&kinds::Capabilities::c_interface>(
+        kind, [&]<class WK>(std::type_identity<WK>) { made = std::make_unique<KindWorld<WK>>(scene); });
+    return made;
 }
 
 }  // namespace noneuclid::capi

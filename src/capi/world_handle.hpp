@@ -11,7 +11,7 @@
 #include "capi/noneuclid.h"
 #include "render/canvas.hpp"
 #include "render/draw_options.hpp"
-#include "world/engines.hpp"
+#include "kinds/kinds.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::capi {
@@ -43,6 +43,7 @@ public:
 // template of the world and the drawing compiled once more.)
 bool capi_engine(world::EngineKind engine);
 // A world of `scene` on `engine`, one capi_engine accepts (allocates; may throw std::bad_alloc).
-std::unique_ptr<WorldHandle> make_world_handle(world::EngineKind engine, const world::Scene& scene);
+// The world of `kind` on `scene`; null for a kind whose Capabilities do not say c_interface.
+std::unique_ptr<WorldHandle> make_world_handle(kinds::KindChoice kind, const world::Scene& scene);
 
 }  // namespace noneuclid::capi

@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "geometry/geometry.hpp"
-#include "render/palette.hpp"
 #include "lang/lang.hpp"
 #include "world/engines.hpp"
+#include "world/palette_names.hpp"
 #include "world/quote.hpp"
 #include "files/text_file.hpp"
 #include "files/toml_reader.hpp"
@@ -65,7 +65,7 @@ void read_board(const toml::table& root, Board& b) {
         b.scene = d.plain_string("scene", b.scene);
         b.engine = d.string("engine", b.engine);
         world::EngineKind engine;
-        if (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine))
+        if (!b.engine.empty() && (!world::parse_engine(b.engine, engine) || !world::engine_on_board(engine)))
             throw Bad{t->get("engine")->source(), "display: expected engine = " + world::or_list(world::engine_names(true), true) + ", found \"" + world::printable(b.engine) + "\""};
         b.projection = d.string("projection", b.projection);
         geo::Projection projection{};
@@ -77,9 +77,9 @@ void read_board(const toml::table& root, Board& b) {
         b.one_button = d.boolean("one_button", b.one_button);
         b.sound = d.boolean("sound", b.sound);
         b.palette = d.string("palette", b.palette);
-        render::Palette palette{};
-        if (!render::parse_palette(b.palette, palette))
-            throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(render::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
+        world::Palette palette{};
+        if (!world::parse_palette(b.palette, palette))
+            throw Bad{t->get("palette")->source(), "display: expected palette = " + world::or_list(world::palette_names(), true) + ", found \"" + world::printable(b.palette) + "\""};
         b.language = d.string("language", b.language);
         lang::Language language{};
         if (!b.language.empty() && !lang::parse_language(b.language, language))

@@ -57,11 +57,11 @@ struct Board {
     std::string device = "/dev/fb0";
     double fps = 60;
     std::string scene = "kiosk";
-    std::string engine = "fixed";
+    std::string engine;  // "": none named (the kind of world's first, fixed for a world of constant K)
     std::string projection = "equidistant";
     bool antialias = false;
     bool hud = true;
-    std::string palette = "scene";  // render/palette.hpp's names
+    std::string palette = "scene";  // world/palette_names.hpp's names
     bool large_hud = false;
     std::string language;  // en, de, fr ("" the locale's)
     bool one_button = false;  // fire alone plays (docs/accessibility.md)

@@ -13,45 +13,19 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
-#include <vector>
 
 #include "render/canvas.hpp"
+#include "world/palette_names.hpp"
 
 namespace noneuclid::render {
 
-enum class Palette : uint8_t { scene, colour_blind, high_contrast };
-inline constexpr Palette kPalettes[] = {Palette::scene, Palette::colour_blind, Palette::high_contrast};
+// The palettes and their names are world/palette_names.hpp's (a board file reads them there,
+// below the renderer); here they are the renderer's own names too.
+using world::Palette, world::kPalettes, world::PaletteRow, world::kPaletteRows;
+using world::palette_name, world::palette_help, world::parse_palette, world::palette_names;
 
 // What a line is, for a palette: world::BodyKind's order (render/body_points.hpp checks it).
 enum class LineRole : uint8_t { body, ship, asteroid, bullet, grid, instrument };
-
-// The names (header-only: board files check them without the renderer).
-struct PaletteRow {
-    Palette p;
-    const char* name;
-    const char* help;
-};
-inline constexpr PaletteRow kPaletteRows[] = {
-    {Palette::scene, "scene", "every body in its own colour (the default)"},
-    {Palette::colour_blind, "colour-blind", "Okabe-Ito colours by role, apart under every colour-vision deficiency"},
-    {Palette::high_contrast, "high-contrast", "bright lines and text on black, 7:1 contrast or more"},
-};
-inline const char* palette_name(Palette p) { return kPaletteRows[static_cast<int>(p)].name; }
-inline const char* palette_help(Palette p) { return kPaletteRows[static_cast<int>(p)].help; }
-inline bool parse_palette(const std::string& name, Palette& out) {
-    for (const PaletteRow& r : kPaletteRows)
-        if (name == r.name) {
-            out = r.p;
-            return true;
-        }
-    return false;
-}
-inline std::vector<std::string> palette_names() {
-    std::vector<std::string> out;
-    for (const PaletteRow& r : kPaletteRows) out.push_back(r.name);
-    return out;
-}
 
 // A line's colour in palette p: its own colour in the scene palette, else its role's.
 Rgb palette_line(Palette p, LineRole role, Rgb own);

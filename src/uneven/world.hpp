@@ -40,7 +40,8 @@
 #include "world/game.hpp"
 #include "world/instruments.hpp"
 #include "world/scene.hpp"
-#include "world/world.hpp"
+#include "world/action.hpp"
+#include "world/ranges.hpp"
 
 namespace noneuclid::uneven {
 

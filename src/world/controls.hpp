@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "world/world.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::world {
 

@@ -175,7 +175,10 @@ long loop_allocations(world::EngineKind engine, int threads, const char* scene_n
     app::SessionOptions so;
     so.hud = true, so.show_fps = true, so.legend = "keys", so.threads = threads;
     so.attract = {2, 10, 0.25};  // attract mode comes and goes with the keys
-    const auto session = app::make_session(engine, scene, so, render::builtin_font(), nullptr);
+    kinds::KindChoice kind;
+    std::string why;
+    EXPECT_TRUE(kinds::choose_kind(scene, &engine, kind, why)) << why;
+    const auto session = app::make_session(kind, scene, so, render::builtin_font(), nullptr);
     KeysDisplay display;
     app::LoopOptions lo;
     lo.frames = 400;
@@ -216,7 +219,7 @@ TEST(NoAllocation, TheShipOverTheEarthAllocatesNothingPerFrame) {
 // triangle marked and measured again each frame.
 TEST(NoAllocation, AnUnevenWorldAllocatesNothingPerFrame) {
     for (const char* name : {"lens", "hills"}) {
-        EXPECT_EQ(loop_allocations(world::engine_named("fixed"), 1, name), 0) << name;
+        EXPECT_EQ(loop_allocations(world::engine_named("double"), 1, name), 0) << name;  // (its one engine)
         world::Scene scene;
         ASSERT_TRUE(world::builtin_scene(name, {}, scene));
         for (bool chart : {true, false}) {

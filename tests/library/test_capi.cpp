@@ -88,7 +88,7 @@ TEST(CApi, SceneTextIsTheSceneFile) {
     app::Options o;
     o.scene = NONEUCLID_TEST_DATA "/lesson.toml", o.frames = 20, o.width = 200, o.height = 150, o.aa = true;
     o.projection = geo::Projection::stereographic;
-    world::parse_engine("double", o.engine);
+    o.engine = world::engine_named("double");
     app::Picture picture;
     app::render_picture(o, app::load_scene(o), nullptr, render::builtin_font(), picture);
     EXPECT_TRUE(ours == picture.pixels);

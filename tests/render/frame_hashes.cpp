@@ -98,7 +98,7 @@ void run(const Case& c) {
     const world::Scene scene = app::load_scene(o);
     const app::SessionOptions so = app::session_options(o, scene, "buttons");
     const std::unique_ptr<app::Session> s =
-        app::make_session(o.engine, scene, so, render::builtin_font(), nullptr);
+        app::make_session(app::world_kind(o, scene), scene, so, render::builtin_font(), nullptr);
 
     const std::ptrdiff_t stride = static_cast<std::ptrdiff_t>(kWidth) * o.format.bytes_per_pixel();
     std::vector<uint8_t> pixels(static_cast<std::size_t>(stride) * kHeight);

@@ -120,7 +120,11 @@ TEST(UnevenViews, TheLensShowsTheSquareBehindItTwice) {
             app::SessionOptions so;
             so.hud = false;
             so.draw.projection = chart ? geo::Projection::stereographic : geo::Projection::azimuthal_equidistant;
-            const auto session = app::make_session(world::kDefaultEngine, s, so, render::builtin_font(), nullptr);
+            kinds::KindChoice kind;
+            std::string why;
+            ASSERT_TRUE(kinds::choose_kind(s, nullptr, kind, why)) << why;
+            ASSERT_STREQ(kinds::kind_name(kind.kind), "uneven");
+            const auto session = app::make_session(kind, s, so, render::builtin_font(), nullptr);
             Picture p(800, 480);
             session->draw(p.c);
             const int n = regions(p.c, blue, 12);
