@@ -9,6 +9,7 @@
 // has it (an error naming the kind's engines if not), else the kind's first.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <tuple>
@@ -45,7 +46,8 @@ struct KindRow {
     bool (*accepts)(const world::Scene&);
     Capabilities can;
     static constexpr std::size_t kEngines = sizeof...(Ons);
-    static constexpr world::EngineKind kEngineList[] = {Ons::engine...};
+    // std::array, not a C array: clang 14 takes a pack-sized static C array member as incomplete.
+    static constexpr std::array<world::EngineKind, sizeof...(Ons)> kEngineList{Ons::engine...};
     using ons = std::tuple<Ons...>;
 };
 
