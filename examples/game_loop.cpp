@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
     World<noneuclid::fx::fixed> w(scene);
     struct Press { double time; Action action; bool down; };
     const Press presses[] = {{0.1, Action::fire, true}, {0.1, Action::fire, false},  // fire starts a game
-                             {0.5, Action::fire, true}, {0.5, Action::turn_left, true}};
+                             {0.5, Action::fire, true}, {0.5, Action::left, true}};
     std::size_t next = 0;
     const char* const kinds[] = {"start", "hit", "crash", "level", "over"};
     const long frames = argc > 1 ? std::atol(argv[1]) : 600;

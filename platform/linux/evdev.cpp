@@ -113,15 +113,15 @@ private:
         control_.assign(KEY_MAX + 1, -1);
         for (const auto& k : config.keys) {
             if (k.code == 0 || k.code > KEY_MAX) {
-                error = "key code " + std::to_string(k.code) + " (" + world::control_name(k.control) +
+                error = "key code " + std::to_string(k.code) + " (" + world::action_name(k.control) +
                         ") is not an evdev key: use a code from 1 to " + std::to_string(KEY_MAX) +
                         " from /usr/include/linux/input-event-codes.h";
                 return false;
             }
             if (control_[k.code] >= 0 && control_[k.code] != static_cast<int>(k.control)) {
                 error = "key code " + std::to_string(k.code) + " is given to both " +
-                        world::control_name(static_cast<world::Control>(control_[k.code])) + " and " +
-                        world::control_name(k.control) + ": give each [[button]] in the board file its own key";
+                        world::action_name(static_cast<world::Action>(control_[k.code])) + " and " +
+                        world::action_name(k.control) + ": give each [[button]] in the board file its own key";
                 return false;
             }
             control_[k.code] = static_cast<int>(k.control);
@@ -238,7 +238,7 @@ private:
     }
 
     void push(unsigned code, bool pressed) {
-        queue_.push({static_cast<world::Control>(control_[code]), pressed});  // never full: read() keeps room for a resync
+        queue_.push({static_cast<world::Action>(control_[code]), pressed});  // never full: read() keeps room for a resync
     }
 
     void set(Device& d, unsigned code, bool pressed) {

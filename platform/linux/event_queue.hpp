@@ -2,7 +2,7 @@
 // and evdev hold between the kernel's events and the frame loop's read(). No allocation.
 #pragma once
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::platform {
 

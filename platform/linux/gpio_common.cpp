@@ -31,7 +31,7 @@ bool is_path(const std::string& s) { return !s.empty() && s[0] == '/'; }
 }  // namespace
 
 std::string describe_line(const GpioButton& button) {
-    std::string s = "GPIO line " + std::to_string(button.line) + " (" + world::control_name(button.control);
+    std::string s = "GPIO line " + std::to_string(button.line) + " (" + world::action_name(button.control);
     if (button.header_pin > 0) s += ", header pin " + std::to_string(button.header_pin);
     return s + ")";
 }
@@ -51,8 +51,8 @@ std::string check_config(const GpioConfig& config) {
         for (size_t j = 0; j < i; ++j)
             if (config.buttons[i].line == config.buttons[j].line)
                 return "GPIO line " + std::to_string(config.buttons[i].line) + " is given to both " +
-                       world::control_name(config.buttons[j].control) + " and " +
-                       world::control_name(config.buttons[i].control) +
+                       world::action_name(config.buttons[j].control) + " and " +
+                       world::action_name(config.buttons[i].control) +
                        ": give each [[button]] in the board file its own gpio line";
     if (config.debounce_ms > kMaxDebounceMs)
         return "a GPIO debounce of " + std::to_string(config.debounce_ms) + " ms is too long: set debounce_ms in the "

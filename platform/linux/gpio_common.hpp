@@ -87,7 +87,7 @@ private:
 
     int count_ = 0;
     int64_t debounce_ns_ = 0;
-    std::vector<world::Control> control_;
+    std::vector<world::Action> control_;
     std::vector<bool> reported_;
     std::vector<int64_t> until_;  // end of the debounce window, -1: none
     EventQueue<kQueue> queue_;

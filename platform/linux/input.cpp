@@ -86,7 +86,7 @@ int print_input_events(InputSet& inputs, long max_events, double timeout_seconds
         const int n = inputs.read(events, kEvents, monotonic_ns());
         for (int i = 0; i < n; ++i) {
             std::fprintf(out, "%s %s\n", events[i].pressed ? "press" : "release",
-                         world::control_name(events[i].control));
+                         world::action_name(events[i].control));
             if (std::fflush(out) != 0) return fail("cannot write the events", std::strerror(errno));
             if (max_events > 0 && ++printed >= max_events) return 0;
         }

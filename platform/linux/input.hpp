@@ -14,13 +14,13 @@
 
 #include "app/platform.hpp"  // monotonic_ns: the clock read() and deadline_ns() speak
 #include "files/board.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::platform {
 
 // One button wired from a GPIO line to ground (pull-up, active-low).
 struct GpioButton {
-    world::Control control = world::Control::thrust;
+    world::Action control = world::Action::thrust;
     unsigned line = 0;    // line offset on the chip (= BCM number on a Raspberry Pi)
     int header_pin = 0;   // physical pin on the 40-pin header, for messages (0: unknown)
 };
@@ -36,7 +36,7 @@ struct GpioConfig {
 
 // One key code (linux/input-event-codes.h, e.g. 57 = KEY_SPACE) mapped to a control.
 struct EvdevKey {
-    world::Control control = world::Control::thrust;
+    world::Action control = world::Action::thrust;
     unsigned code = 0;
 };
 

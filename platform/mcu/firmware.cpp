@@ -44,10 +44,10 @@ struct View {
 
 // A control as the program's session takes it (render/play.hpp): a world action, or the
 // projection control, the next projection on its press; hud, the HUD on or off on its press.
-void apply(World& w, View& v, world::Control c, bool pressed) {
+void apply(World& w, View& v, world::Action c, bool pressed) {
     if (render::apply_control(w, c, pressed) != render::Applied::not_action || !pressed) return;
-    if (c == world::Control::hud) v.hud = !v.hud;
-    if (c == world::Control::projection) v.draw.projection = render::next_projection(v.draw.projection);
+    if (c == world::Action::hud) v.hud = !v.hud;
+    if (c == world::Action::projection) v.draw.projection = render::next_projection(v.draw.projection);
 }
 
 // The controls due by the world's time now.

@@ -27,13 +27,6 @@ bool on_off(const char* v, bool& out) {
     return false;
 }
 
-bool control_named(const char* name, world::Control& out) {
-    for (int i = 0; i < world::kControlCount; ++i)
-        if (std::strcmp(name, world::control_name(static_cast<world::Control>(i))) == 0)
-            return out = static_cast<world::Control>(i), true;
-    return false;
-}
-
 // One setting line (key, value).
 bool setting(const char* key, const char* value, Recording& out, char* why, std::size_t size) {
     bool flag = false;
@@ -99,7 +92,7 @@ bool parse_recording(char* text, Recording& out, char* why, std::size_t why_size
         e.time = time;
         const bool known = kind && (std::strcmp(kind, "press") == 0 || std::strcmp(kind, "release") == 0 ||
                                     std::strcmp(kind, "tap") == 0);
-        if (!known || !what || !control_named(what, e.control) || e.control == world::Control::quit || next_word(&at)) {
+        if (!known || !what || !world::parse_action(what, e.control) || e.control == world::Action::quit || next_word(&at)) {
             std::snprintf(why, why_size, "line %ld: expected 'TIME press|release|tap CONTROL' (not quit, mark or attract).",
                           line);
             return false;
@@ -117,7 +110,7 @@ bool parse_recording(char* text, Recording& out, char* why, std::size_t why_size
     }
     // Without them render takes the machine's console font and locale, which the firmware has not.
     bool hud_event = false;
-    for (int i = 0; i < out.count; ++i) hud_event = hud_event || out.events[i].control == world::Control::hud;
+    for (int i = 0; i < out.count; ++i) hud_event = hud_event || out.events[i].control == world::Action::hud;
     if ((out.hud || hud_event) && !(out.named_font && out.named_lang)) {
         std::snprintf(why, why_size, "with the HUD on, the recording must say 'font builtin' and 'lang en'.");
         return false;

@@ -8,7 +8,7 @@
 #include <cstddef>
 
 #include "geometry/projection.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::mcu {
 
@@ -16,7 +16,7 @@ struct RecordedEvent {
     double time = 0;
     bool pressed = true;
     bool tap = false;  // press and release at once
-    world::Control control = world::Control::thrust;
+    world::Action control = world::Action::thrust;
 };
 
 struct Recording {

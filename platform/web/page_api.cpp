@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/lesson.hpp"
@@ -114,22 +115,16 @@ void start(const std::vector<std::string>& words, Run& run) {
     app::compose_run(run.live, o, run.script, *run.display, "web", run.recording_file, nullptr);
 }
 
-// The page's keys (KeyboardEvent.key), as the desktop window has them (README, Controls).
-struct Key {
-    const char* key;
-    const char* control;  // a control's name: one this build has not (fire, before the game) maps no key
-};
-constexpr Key kKeys[] = {
-    {"ArrowUp", "thrust"},       {"w", "thrust"},         {"W", "thrust"},        {"ArrowLeft", "left"},
-    {"a", "left"},               {"A", "left"},           {"ArrowRight", "right"}, {"d", "right"},
-    {"D", "right"},              {"+", "curvature_up"},   {"=", "curvature_up"},  {"]", "curvature_up"},
-    {"-", "curvature_down"},     {"[", "curvature_down"}, {"1", "hyperbolic"},    {"2", "flat"},
-    {"3", "spherical"},          {"p", "projection"},     {"P", "projection"},    {"h", "hud"},
-    {"H", "hud"},                {"r", "reset"},          {"R", "reset"},         {" ", "fire"},
-    {"m", "instrument"},         {"M", "instrument"},     {"Escape", "quit"},
-    {"n", "mute"},               {"N", "mute"},           {".", "strength_up"},   {">", "strength_up"},
-    {",", "strength_down"},      {"<", "strength_down"},
-};
+// The action table's key word (world/action.hpp) as the page's KeyboardEvent.key: a printable
+// character is itself; of the X11 names, those a page's keyboard has.
+std::string page_key(std::string word) {
+    if (word.size() == 1) return word;
+    if (word == "Up" || word == "Left" || word == "Right") return "Arrow" + word;
+    if (word == "space") return " ";
+    if (word == "Escape") return word;
+    if (word == "Control_L" || word == "Control_R") return "Control";
+    return "";  // the keypad's: the page sees the character it types
+}
 
 bool running() { return g_run && !g_run->done; }
 
@@ -187,16 +182,16 @@ EMSCRIPTEN_KEEPALIVE void nw_stop() {
     if (noneuclid::web::running()) g_run->display->close();
 }
 
-// A control's number (world::Control) by name, or -1 if this build has none by that name.
+// A control's number (world::Action) by name, or -1 if this build has none by that name.
 EMSCRIPTEN_KEEPALIVE int nw_control(const char* name) {
-    noneuclid::world::Control c{};
-    return noneuclid::world::parse_control(name, c) ? static_cast<int>(c) : -1;
+    noneuclid::world::Action c{};
+    return noneuclid::world::parse_action(name, c) ? static_cast<int>(c) : -1;
 }
 
 // A control pressed (1) or released (0): a touch button, the K slider.
 EMSCRIPTEN_KEEPALIVE void nw_input(int control, int pressed) {
-    if (!noneuclid::web::running() || control < 0 || control >= noneuclid::world::kControlCount) return;
-    g_run->display->queue({static_cast<noneuclid::world::Control>(control), pressed != 0});
+    if (!noneuclid::web::running() || control < 0 || control >= noneuclid::world::kActionCount) return;
+    g_run->display->queue({static_cast<noneuclid::world::Action>(control), pressed != 0});
 }
 
 // A tap on the canvas at pixel (x, y): a mark of the live instrument there (turned on if it
@@ -209,8 +204,9 @@ EMSCRIPTEN_KEEPALIVE int nw_mark(double x, double y) {
 
 // The control a key (KeyboardEvent.key) stands for, or -1.
 EMSCRIPTEN_KEEPALIVE int nw_key(const char* key) {
-    for (const noneuclid::web::Key& k : noneuclid::web::kKeys)
-        if (std::string(key) == k.key) return nw_control(k.control);
+    for (int i = 0; i < noneuclid::world::kActionCount; ++i)
+        if (noneuclid::world::any_key(i, [&](std::string_view w) { return noneuclid::web::page_key(std::string(w)) == key; }))
+            return i;
     return -1;
 }
 

@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "app/platform.hpp"
@@ -252,29 +253,19 @@ public:
     }
 };
 
-// The control a key is, if any.
-bool control_of(KeySym s, world::Control& c) {
-    using world::Control;
-    switch (s) {
-        case XK_Escape: c = Control::quit; return true;
-        case XK_Up: case XK_w: case XK_W: case XK_KP_Up: c = Control::thrust; return true;
-        case XK_Left: case XK_a: case XK_A: case XK_KP_Left: c = Control::left; return true;
-        case XK_Right: case XK_d: case XK_D: case XK_KP_Right: c = Control::right; return true;
-        case XK_plus: case XK_equal: case XK_bracketright: case XK_KP_Add: c = Control::curvature_up; return true;
-        case XK_minus: case XK_bracketleft: case XK_KP_Subtract: c = Control::curvature_down; return true;
-        case XK_1: case XK_KP_1: c = Control::hyperbolic; return true;
-        case XK_2: case XK_KP_2: c = Control::flat; return true;
-        case XK_3: case XK_KP_3: c = Control::spherical; return true;
-        case XK_p: case XK_P: c = Control::projection; return true;
-        case XK_h: case XK_H: c = Control::hud; return true;
-        case XK_m: case XK_M: c = Control::instrument; return true;
-        case XK_n: case XK_N: c = Control::mute; return true;
-        case XK_period: case XK_greater: c = Control::strength_up; return true;
-        case XK_comma: case XK_less: c = Control::strength_down; return true;
-        case XK_r: case XK_R: c = Control::reset; return true;
-        case XK_space: case XK_Control_L: case XK_Control_R: c = Control::fire; return true;
-        default: return false;
+// The action a key is, if any: the keys of the action table (world/action.hpp), a printable
+// character being its own keysym (X11's Latin-1 keysyms are the characters' codes), a word an
+// X11 keysym name.
+bool control_of(KeySym s, world::Action& c) {
+    for (int i = 0; i < world::kActionCount; ++i) {
+        const bool is = world::any_key(i, [&](std::string_view word) {
+            const KeySym sym = word.size() == 1 ? static_cast<KeySym>(static_cast<unsigned char>(word[0]))
+                                                : XStringToKeysym(std::string(word).c_str());
+            return sym != NoSymbol && sym == s;
+        });
+        if (is) return c = static_cast<world::Action>(i), true;
     }
+    return false;
 }
 
 class X11Display final : public app::Display {
@@ -288,7 +279,7 @@ public:
             while (XPending(x_.dpy)) {
                 XEvent ev;
                 XNextEvent(x_.dpy, &ev);
-                world::Control c{};
+                world::Action c{};
                 if ((ev.type == KeyPress || ev.type == KeyRelease) && control_of(XLookupKeysym(&ev.xkey, 0), c)) {
                     sink.input({c, ev.type == KeyPress});
                 } else if (ev.type == ConfigureNotify) {

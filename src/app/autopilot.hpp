@@ -18,11 +18,11 @@
 
 #include <cmath>
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::app {
 
-using world::Control;
+using world::Action;
 using world::InputEvent;
 
 struct AttractOptions {
@@ -60,8 +60,8 @@ public:
         if (!active_) return 0;
         active_ = false;
         int n = release_all(out);
-        out[n++] = {Control::reset, true};
-        out[n++] = {Control::reset, false};
+        out[n++] = {Action::reset, true};
+        out[n++] = {Action::reset, false};
         return n;
     }
 
@@ -90,37 +90,37 @@ public:
         accumulator_ += duty;
         const bool hold_k = accumulator_ >= 1;
         if (hold_k) accumulator_ -= 1;
-        n += set(dir_ > 0 ? Control::curvature_up : Control::curvature_down, hold_k, out + n);
-        n += set(dir_ > 0 ? Control::curvature_down : Control::curvature_up, false, out + n);
+        n += set(dir_ > 0 ? Action::curvature_up : Action::curvature_down, hold_k, out + n);
+        n += set(dir_ > 0 ? Action::curvature_down : Action::curvature_up, false, out + n);
         if (v.game) {
             const bool aimed = v.target && std::fabs(v.aim) < 0.08 && v.distance < v.range;
-            n += set(Control::left, v.target && v.aim > 0.05, out + n);
-            n += set(Control::right, v.target && v.aim < -0.05, out + n);
-            n += set(Control::fire, aimed || (v.ready && !held_[slot(Control::fire)]), out + n);
+            n += set(Action::left, v.target && v.aim > 0.05, out + n);
+            n += set(Action::right, v.target && v.aim < -0.05, out + n);
+            n += set(Action::fire, aimed || (v.ready && !held_[slot(Action::fire)]), out + n);
         } else {
-            n += set(Control::left, std::fmod(tt, 5.0) >= 4.4, out + n);
+            n += set(Action::left, std::fmod(tt, 5.0) >= 4.4, out + n);
             if (v.ship_speed < 1e9) {  // a ship to drop the marks
-                if (!v.measuring) out[n++] = {Control::instrument, true}, out[n++] = {Control::instrument, false};
+                if (!v.measuring) out[n++] = {Action::instrument, true}, out[n++] = {Action::instrument, false};
                 const bool mark = tt >= next_mark_;
                 if (mark) next_mark_ += o_.mark_seconds;
-                n += set(Control::fire, mark, out + n);
+                n += set(Action::fire, mark, out + n);
             }
         }
-        n += set(Control::thrust, v.ship_speed < o_.cruise_speed, out + n);
+        n += set(Action::thrust, v.ship_speed < o_.cruise_speed, out + n);
         return n;
     }
 
 private:
-    static constexpr Control kHeld[] = {Control::thrust,         Control::left,  Control::right,
-                                        Control::curvature_up,   Control::fire,
-                                        Control::curvature_down};
+    static constexpr Action kHeld[] = {Action::thrust,         Action::left,  Action::right,
+                                        Action::curvature_up,   Action::fire,
+                                        Action::curvature_down};
     static constexpr int kHeldCount = 6;
-    static int slot(Control c) {
+    static int slot(Action c) {
         for (int i = 0; i < kHeldCount; ++i)
             if (kHeld[i] == c) return i;
         return 0;
     }
-    int set(Control c, bool down, InputEvent* out) {
+    int set(Action c, bool down, InputEvent* out) {
         bool& h = held_[slot(c)];
         if (h == down) return 0;
         h = down;
@@ -129,7 +129,7 @@ private:
     }
     int release_all(InputEvent* out) {
         int n = 0;
-        for (Control c : kHeld) n += set(c, false, out + n);
+        for (Action c : kHeld) n += set(c, false, out + n);
         return n;
     }
 

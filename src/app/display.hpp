@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "render/canvas.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::app {
 

@@ -6,7 +6,7 @@
 // actions, so a recording of a one-button run replays without the mode.
 #pragma once
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::app {
 
@@ -24,10 +24,10 @@ public:
         held_ = false;
         if (thrusting_) {
             thrusting_ = false;
-            out[0] = {world::Control::thrust, false};
+            out[0] = {world::Action::thrust, false};
             return 1;
         }
-        const world::Control tap = game ? world::Control::fire : world::Control::preset;
+        const world::Action tap = game ? world::Action::fire : world::Action::preset;
         out[0] = {tap, true}, out[1] = {tap, false};
         return 2;
     }
@@ -35,10 +35,10 @@ public:
     // once fire has been held long enough. At most 2 controls into out.
     int step(double t, bool turning, world::InputEvent* out) {
         int n = 0;
-        if (!turning) out[n++] = {world::Control::left, true};
+        if (!turning) out[n++] = {world::Action::left, true};
         if (held_ && !thrusting_ && t - since_ >= kHoldSeconds) {
             thrusting_ = true;
-            out[n++] = {world::Control::thrust, true};
+            out[n++] = {world::Action::thrust, true};
         }
         return n;
     }

@@ -10,14 +10,14 @@ void Recorder::setting(const char* key, const std::string& value) {
     if (f_) std::fprintf(f_, "%s %s\n", key, value.c_str());
 }
 
-void Recorder::event(double time, ScriptEvent::Kind kind, world::Control control) {
+void Recorder::event(double time, ScriptEvent::Kind kind, world::Action control) {
     if (!f_) return;
     switch (kind) {
         case ScriptEvent::attract_on: std::fprintf(f_, "%.9f attract on\n", time); return;
         case ScriptEvent::attract_off: std::fprintf(f_, "%.9f attract off\n", time); return;
-        case ScriptEvent::press: std::fprintf(f_, "%.9f press %s\n", time, world::control_name(control)); return;
-        case ScriptEvent::release: std::fprintf(f_, "%.9f release %s\n", time, world::control_name(control)); return;
-        case ScriptEvent::tap: std::fprintf(f_, "%.9f tap %s\n", time, world::control_name(control)); return;
+        case ScriptEvent::press: std::fprintf(f_, "%.9f press %s\n", time, world::action_name(control)); return;
+        case ScriptEvent::release: std::fprintf(f_, "%.9f release %s\n", time, world::action_name(control)); return;
+        case ScriptEvent::tap: std::fprintf(f_, "%.9f tap %s\n", time, world::action_name(control)); return;
         case ScriptEvent::mark: return;  // (mark() writes those)
     }
 }

@@ -17,7 +17,7 @@ public:
     explicit Recorder(std::FILE* f) : f_(f) {}
     void comment(const std::string& text);
     void setting(const char* key, const std::string& value);
-    void event(double time, ScriptEvent::Kind kind, world::Control control = world::Control::thrust);
+    void event(double time, ScriptEvent::Kind kind, world::Action control = world::Action::thrust);
     void mark(double time, double r, double theta_deg);
 
 private:

@@ -56,10 +56,10 @@ std::string control_between(const std::string& content, std::size_t at) {
 
 std::string control_list() {
     std::string names;
-    for (int i = 0; i < world::kControlCount; ++i) {
-        const auto c = static_cast<world::Control>(i);
-        if (c == world::Control::quit) continue;
-        names += std::string(names.empty() ? "" : ", ") + world::control_name(c);
+    for (int i = 0; i < world::kActionCount; ++i) {
+        const auto c = static_cast<world::Action>(i);
+        if (c == world::Action::quit) continue;
+        names += std::string(names.empty() ? "" : ", ") + world::action_name(c);
     }
     return names;
 }
@@ -141,7 +141,7 @@ bool parse_script(const std::string& text, const std::string& file, Script& out,
             else if (kind == "release") e.kind = ScriptEvent::release;
             else if (kind == "tap") e.kind = ScriptEvent::tap;
             else return fail("expected press, release, tap, mark or attract after the time, found " + quote(kind));
-            if (!world::parse_control(what, e.control) || e.control == world::Control::quit)
+            if (!world::parse_action(what, e.control) || e.control == world::Action::quit)
                 return fail("expected a control (" + control_list() + "), found " + quote(what));
         }
         if (words >> extra) return fail("unexpected " + quote(extra) + " after " + quote(what));

@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::app {
 
@@ -32,7 +32,7 @@ struct ScriptEvent {
     enum Kind : uint8_t { press, release, tap, attract_on, attract_off, mark };
     double time = 0;
     Kind kind = press;
-    world::Control control = world::Control::thrust;  // press, release, tap
+    world::Action control = world::Action::thrust;  // press, release, tap
     double r = 0, theta_deg = 0;                       // mark: where the live instrument's mark goes
 };
 

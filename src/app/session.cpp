@@ -46,7 +46,7 @@ public:
     }
 
     void queue(world::InputEvent e) override {
-        if (e.control == world::Control::quit) {
+        if (e.control == world::Action::quit) {
             if (e.pressed) quit_ = true;
             return;
         }
@@ -99,7 +99,7 @@ public:
         for (int i = 0; i < n; ++i) apply(ap[i]);
         if (options_.one_button && !autopilot_.active()) {
             world::InputEvent ob[2];
-            const int k = one_button_.step(world_.time, world_.held(world::Action::turn_left), ob);
+            const int k = one_button_.step(world_.time, world_.held(world::Action::left), ob);
             for (int i = 0; i < k; ++i) apply(ob[i]);
         }
         const world::GamePhase before = world_.game().phase;
@@ -183,9 +183,9 @@ private:
             for (int i = 0; i < n; ++i) apply(ap[i]);
         }
         user_held_[static_cast<int>(e.control)] = e.pressed;
-        if (e.control == world::Control::fire && e.pressed) ++fire_presses_;
+        if (e.control == world::Action::fire && e.pressed) ++fire_presses_;
         if (e.pressed) ++presses_;
-        if (options_.one_button && e.control == world::Control::fire) {  // (app/one_button.hpp)
+        if (options_.one_button && e.control == world::Action::fire) {  // (app/one_button.hpp)
             world::InputEvent out[2];
             const int n = one_button_.fire(e.pressed, world_.time, world_.game().on(), out);
             for (int i = 0; i < n; ++i) apply(out[i]);
@@ -201,23 +201,23 @@ private:
             record(e.pressed ? ScriptEvent::press : ScriptEvent::release, e.control);
         if (done != render::Applied::not_action || !e.pressed) return;
         switch (e.control) {
-            case world::Control::projection:  // the kind's next view
+            case world::Action::projection:  // the kind's next view
                 options_.draw.projection = WK::next_view(options_.draw.projection);
                 record(ScriptEvent::tap, e.control);
                 break;
-            case world::Control::hud:
+            case world::Action::hud:
                 options_.hud = !options_.hud;
                 record(ScriptEvent::tap, e.control);
                 break;
-            case world::Control::quit: quit_ = true; break;
-            case world::Control::mute:
+            case world::Action::quit: quit_ = true; break;
+            case world::Action::mute:
                 sound_.muted = !sound_.muted;
                 record(ScriptEvent::tap, e.control);
                 break;
             default: break;
         }
     }
-    void record(ScriptEvent::Kind kind, world::Control c = world::Control::thrust) {
+    void record(ScriptEvent::Kind kind, world::Action c = world::Action::thrust) {
         if (recorder_) recorder_->event(world_.time, kind, c);
     }
     bool user_held_any() const {
@@ -290,7 +290,7 @@ private:
     double dt_;  // world seconds a step: the clock (World::step)
     world::InputEvent queue_[kQueue];
     int queued_ = 0;
-    bool user_held_[world::kControlCount] = {};
+    bool user_held_[world::kActionCount] = {};
     bool quit_ = false, replayed_attract_ = false;
     SoundFrame sound_;
     double fps_ = 0;

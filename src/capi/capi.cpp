@@ -194,9 +194,9 @@ nw_status nw_control(nw_world* w, const char* control, int pressed) {
     if (!control) return null_arg("nw_control", "control");
     return guarded("nw_control", [&] {
         world::Action a{};
-        if (!world::parse_action(std::string(name_of(control)), a)) {
+        if (!world::parse_action(name_of(control), a) || !world::is_world_action(a)) {
             std::vector<std::string> names;
-            for (int i = 0; i < world::kActionCount; ++i) names.emplace_back(world::action_name(static_cast<world::Action>(i)));
+            for (int i = 0; i < world::kWorldActionCount; ++i) names.emplace_back(world::action_name(static_cast<world::Action>(i)));
             return fail(NW_ERR_NAME, "nw_control: no control " + world::quote(name_of(control)) + ": name " +
                                          world::or_list(names) + ".");
         }

@@ -15,10 +15,10 @@
 namespace noneuclid::files {
 namespace {
 
-// Every control a button may name, from the table (world/controls.hpp): "thrust, left, ... or mute".
+// Every control a button may name, from the table (world/action.hpp): "thrust, left, ... or mute".
 std::string control_list() {
     std::vector<std::string> names;
-    for (int i = 0; i < world::kControlCount; ++i) names.emplace_back(world::control_name(static_cast<world::Control>(i)));
+    for (int i = 0; i < world::kActionCount; ++i) names.emplace_back(world::action_name(static_cast<world::Action>(i)));
     return world::or_list(names);
 }
 
@@ -116,7 +116,7 @@ void read_board(const toml::table& root, Board& b) {
             if (!a) throw Bad{t.source(), "button: expected action = \"thrust\" (or " + control_list() + "), found none"};
             BoardButton bb;
             const std::string action = br.string("action", "");
-            if (!world::parse_control(action, bb.control))
+            if (!world::parse_action(action, bb.control))
                 throw Bad{a->source(), "button: unknown action \"" + world::printable(action) + "\" (expected " + control_list() + ")"};
             const Reader named(t, "button " + world::quote(action) + ": ");
             bb.gpio = static_cast<int>(named.integer("gpio", -1, 0, 1023, "line offset on the GPIO chip, the BCM number on a Raspberry Pi"));
@@ -127,10 +127,10 @@ void read_board(const toml::table& root, Board& b) {
             for (const BoardButton& o : b.buttons) {
                 if (bb.gpio >= 0 && o.gpio == bb.gpio)
                     throw Bad{t.get("gpio")->source(), "button " + world::quote(action) + ": gpio " + std::to_string(bb.gpio) +
-                                                           " is already the " + world::quote(world::control_name(o.control)) + " button"};
+                                                           " is already the " + world::quote(world::action_name(o.control)) + " button"};
                 if (bb.key >= 0 && o.key == bb.key)
                     throw Bad{t.get("key")->source(), "button " + world::quote(action) + ": key " + std::to_string(bb.key) +
-                                                          " is already the " + world::quote(world::control_name(o.control)) + " button"};
+                                                          " is already the " + world::quote(world::action_name(o.control)) + " button"};
             }
             b.buttons.push_back(bb);
         }

@@ -28,7 +28,7 @@
 //     sweep_seconds = 40      # one sweep of K from -1 to +1 (and as long back)
 //     lesson = ""             # a lesson attract mode plays instead (docs/lessons.md)
 //     [[button]]
-//     action = "thrust"       # world::Control names
+//     action = "thrust"       # world::Action names
 //     gpio = 17               # line offset on the chip (the BCM number on a Pi); optional
 //     pin = 11                # header pin, informational (1-40)
 //     key = 57                # evdev key code (KEY_SPACE); optional
@@ -37,13 +37,13 @@
 #include <string>
 #include <vector>
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 #include "files/scene_file.hpp"  // SceneError
 
 namespace noneuclid::files {
 
 struct BoardButton {
-    world::Control control = world::Control::thrust;
+    world::Action control = world::Action::thrust;
     int gpio = -1;  // -1: not on GPIO
     int pin = 0;    // 0: not given
     int key = -1;   // -1: no key code

@@ -8,7 +8,7 @@
 
 #include "geometry/projection.hpp"
 #include "render/hud.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 #include "world/game.hpp"
 #include "world/world.hpp"
 
@@ -27,9 +27,8 @@ Applied apply_action(W& w, world::Action a, bool pressed) {
     return pressed ? Applied::pressed : Applied::released;
 }
 template <class W>
-Applied apply_control(W& w, world::Control c, bool pressed) {
-    world::Action a{};
-    return world::control_action(c, a) ? apply_action(w, a, pressed) : Applied::not_action;
+Applied apply_control(W& w, world::Action c, bool pressed) {
+    return world::is_world_action(c) ? apply_action(w, c, pressed) : Applied::not_action;
 }
 
 // The projection after p, cycling through every projection (the projection control).

@@ -184,7 +184,7 @@ void World::press(world::Action a) {
     using world::Action;
     held_[static_cast<int>(a)] = true;
     switch (a) {
-        case Action::next_preset: {
+        case Action::preset: {
             const std::vector<double>& p = scene_.presets;
             if (p.empty()) break;
             double next = p.front();
@@ -246,7 +246,7 @@ void World::step(double dt) {
     }
     const int ds = held(Action::strength_up) - held(Action::strength_down);
     if (ds != 0) set_gain(gain_ + scene_.strength_rate * ds * dt);
-    const double turn = scene_.turn_rate_deg * kDegree * (held(Action::turn_left) - held(Action::turn_right));
+    const double turn = scene_.turn_rate_deg * kDegree * (held(Action::left) - held(Action::right));
     for (Body& b : bodies)
         if (b.active) step_body(b, dt, turn);
     time += dt;

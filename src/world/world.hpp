@@ -87,7 +87,7 @@ public:
     void press(Action a) {
         held_[static_cast<int>(a)] = true;
         switch (a) {
-            case Action::next_preset: next_preset(); break;
+            case Action::preset: next_preset(); break;
             case Action::reset: reset(); break;
             case Action::hyperbolic: K = T(-1); break;
             case Action::flat: K = T(0); break;
@@ -115,7 +115,7 @@ public:
             if (K >= T(1)) K = T(1), sweep_dir_ = -1;
             if (K <= T(-1)) K = T(-1), sweep_dir_ = 1;
         }
-        const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::turn_left) - held(Action::turn_right));
+        const T turn = T(scene_.turn_rate_deg * kDegree) * T(held(Action::left) - held(Action::right));
         const Steering steer{T(scene_.thrust), turn, game_.top_speed(T(Ranges::kSpeed)), held(Action::thrust)};
         for (Body<T>& b : bodies)
             if (b.active) step_body(b, tick, steer);

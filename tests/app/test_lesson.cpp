@@ -15,14 +15,14 @@ namespace {
 namespace lesson_test {  // (a unity batch shares this file's scope with others)
 
 using namespace noneuclid;
-using world::Control;
+using world::Action;
 
 // Presses and releases at the frames given (counted across the whole lesson); never closes.
 class KeyDisplay final : public app::Display {
 public:
     struct Key {
         long frame;
-        Control control;
+        Action control;
         bool pressed;
     };
     explicit KeyDisplay(std::vector<Key> keys) : keys_(std::move(keys)) {
@@ -77,8 +77,8 @@ TEST(Lesson, StepsEndByTheirSecondsOrWhenDoneAndBeginAtTheirK) {
     ASSERT_TRUE(files::builtin_lesson("curvature", l));
     // Step 1 lasts 20 s; step 2 ends when K > 0.9 (K+ held from frame 1300: 0.5 a second from
     // 0, so about 108 frames); step 3 when K < -0.9 (K- held from frame 1500, from K = +1).
-    KeyDisplay d({{1300, Control::curvature_up, true}, {1450, Control::curvature_up, false},
-                  {1500, Control::curvature_down, true}, {1900, Control::curvature_down, false}});
+    KeyDisplay d({{1300, Action::curvature_up, true}, {1450, Action::curvature_up, false},
+                  {1500, Action::curvature_down, true}, {1900, Action::curvature_down, false}});
     const Played p = play(l, d);
     ASSERT_EQ(p.began.size(), 4u);
     EXPECT_NEAR(p.began[1], 20 * 60, 2);
@@ -97,7 +97,7 @@ TEST(Lesson, AStepWithoutSecondsEndsOnFire) {
     ASSERT_TRUE(files::parse_lesson("title = \"t\"\n[[step]]\ncaption = \"a\"\nscene = \"fig2\"\n"
                                     "[[step]]\ncaption = \"b\"\ncurvature = -0.5\nseconds = 1\n", "t.toml", l, e))
         << e.to_string();
-    KeyDisplay d({{300, Control::fire, true}, {302, Control::fire, false}});
+    KeyDisplay d({{300, Action::fire, true}, {302, Action::fire, false}});
     const Played p = play(l, d);
     ASSERT_EQ(p.began.size(), 2u);
     EXPECT_NEAR(p.began[1], 300, 2);
@@ -134,7 +134,7 @@ namespace attract_lesson_test {  // (a unity batch shares this file's scope with
 
 using namespace noneuclid;
 using lesson_test::KeyDisplay;
-using world::Control;
+using world::Action;
 
 // The kiosk's attract mode playing a lesson: after a second without a button the lesson's first
 // step (fig2 at K = 0) plays with attract mode flying in it; a press gives a new run of the
@@ -144,7 +144,7 @@ TEST(Lesson, AttractModePlaysALessonUntilAButtonIsPressed) {
     ASSERT_TRUE(files::builtin_lesson("lines", l));
     app::Options o = app::defaults(app::Command::run);
     o.scene = "kiosk", o.attract = 1, o.engine = world::engine_named("double");
-    KeyDisplay d({{300, Control::thrust, true}, {305, Control::thrust, false}});
+    KeyDisplay d({{300, Action::thrust, true}, {305, Action::thrust, false}});
     app::AttractLessonRun run(l, o, d, "test", nullptr);
     long lesson_from = -1, back_at = -1, again_at = -1;
     for (long f = 0; f < 800 && run.tick(); ++f) {

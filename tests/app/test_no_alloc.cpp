@@ -138,10 +138,10 @@ public:
     void present() override { inner_.present(); }
     bool wait(int64_t, app::InputSink& sink) override {
         const long f = inner_.presented();
-        sink.input({world::Control::thrust, f % 40 < 20});
-        sink.input({world::Control::fire, f % 30 < 25});  // (the game: starts it, then shots)
-        sink.input({world::Control::left, f % 90 < 30});
-        if (f % 50 == 0) sink.input({world::Control::projection, true}), sink.input({world::Control::projection, false});
+        sink.input({world::Action::thrust, f % 40 < 20});
+        sink.input({world::Action::fire, f % 30 < 25});  // (the game: starts it, then shots)
+        sink.input({world::Action::left, f % 90 < 30});
+        if (f % 50 == 0) sink.input({world::Action::projection, true}), sink.input({world::Action::projection, false});
         return true;
     }
     bool closing() const override { return false; }

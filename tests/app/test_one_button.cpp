@@ -17,7 +17,7 @@ namespace {
 namespace one_button_test {  // (a unity batch shares this file's scope with others)
 
 using namespace noneuclid;
-using world::Control;
+using world::Action;
 
 std::string temp_path(const char* what) {
     const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -48,7 +48,7 @@ OneButtonRun one_button_run(const std::string& scene_name, long frames, const st
         const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "buttons"), font.font, &rec);
         std::size_t next = 0;
         for (long i = 0; i < frames; ++i) {
-            while (next < fire.size() && fire[next].first == i) s->queue({Control::fire, fire[next++].second});
+            while (next < fire.size() && fire[next].first == i) s->queue({Action::fire, fire[next++].second});
             s->step();
             r.K.push_back(s->curvature());
         }

@@ -16,7 +16,7 @@ using namespace noneuclid;
 using app::Script;
 using app::ScriptError;
 using app::ScriptEvent;
-using world::Control;
+using world::Action;
 
 TEST(Script, EventsParseSortedWithTheirKinds) {
     Script s;
@@ -28,10 +28,10 @@ TEST(Script, EventsParseSortedWithTheirKinds) {
     ASSERT_EQ(s.events.size(), 7u);
     EXPECT_EQ(s.events[0].time, 0.0);  // sorted by time
     EXPECT_EQ(s.events[0].kind, ScriptEvent::press);
-    EXPECT_EQ(s.events[1].control, Control::spherical);
+    EXPECT_EQ(s.events[1].control, Action::spherical);
     EXPECT_EQ(s.events[2].kind, ScriptEvent::release);
-    EXPECT_EQ(s.events[3].control, Control::preset);  // ties keep the file's order
-    EXPECT_EQ(s.events[4].control, Control::projection);
+    EXPECT_EQ(s.events[3].control, Action::preset);  // ties keep the file's order
+    EXPECT_EQ(s.events[4].control, Action::projection);
     EXPECT_EQ(s.events[5].kind, ScriptEvent::attract_on);
     EXPECT_EQ(s.events[6].kind, ScriptEvent::attract_off);
     EXPECT_TRUE(s.settings.empty());
@@ -194,7 +194,7 @@ TEST(Script, ThePlayerGivesEventsWhenDue) {
     EXPECT_NE(p.next_due(0.1 - 5e-10), nullptr);  // within the 1e-9 s the times are printed to
     EXPECT_NE(p.next_due(0.1), nullptr);
     EXPECT_EQ(p.next_due(0.19), nullptr);
-    EXPECT_EQ(p.next_due(0.2)->control, Control::left);
+    EXPECT_EQ(p.next_due(0.2)->control, Action::left);
     EXPECT_EQ(p.next_due(100), nullptr);
 }
 

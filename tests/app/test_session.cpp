@@ -19,7 +19,7 @@
 namespace {
 
 using namespace noneuclid;
-using world::Control;
+using world::Action;
 
 world::Scene kiosk_scene() {
     world::Scene s;
@@ -43,8 +43,8 @@ std::vector<std::pair<double, double>> fly(W& w, app::Autopilot& ap, double seco
         v.K = static_cast<double>(w.K), v.ship_speed = speed;
         const int n = ap.frame(w.time, v, ev);
         for (int i = 0; i < n; ++i) {
-            world::Action a{};
-            EXPECT_TRUE(world::control_action(ev[i].control, a)) << "the autopilot only uses world actions";
+            const world::Action a = ev[i].control;
+            EXPECT_TRUE(world::is_world_action(a)) << "the autopilot only uses world actions";
             if (ev[i].pressed) w.press(a);
             else w.release(a);
         }
@@ -94,7 +94,7 @@ TEST(Attract, APressEndsItReleasesWhatItHeldAndResets) {
     const int n = ap.interrupt(w.time, out);
     EXPECT_FALSE(ap.active());
     ASSERT_GE(n, 2);
-    EXPECT_EQ(out[n - 2].control, Control::reset);
+    EXPECT_EQ(out[n - 2].control, Action::reset);
     EXPECT_TRUE(out[n - 2].pressed);
     EXPECT_FALSE(out[n - 1].pressed);
     for (int i = 0; i < n - 2; ++i) EXPECT_FALSE(out[i].pressed) << "only releases before the reset";
@@ -121,7 +121,7 @@ std::string temp_file(const char* what) {
 
 struct Key {
     long frame;  // delivered while waiting for this frame
-    Control control;
+    Action control;
     bool pressed;
 };
 
@@ -229,12 +229,12 @@ long differing_bytes(const app::Picture& a, const app::Picture& b) {
 
 // Keys of every kind: held world actions, a preset, K set by 1/2/3, the projection and the HUD.
 const std::vector<Key> kKeys = {
-    {12, Control::thrust, true},      {40, Control::curvature_down, true}, {95, Control::curvature_down, false},
-    {130, Control::thrust, false},    {131, Control::left, true},          {150, Control::left, false},
-    {160, Control::projection, true}, {161, Control::projection, false},   {170, Control::preset, true},
-    {171, Control::preset, false},    {200, Control::hud, true},           {201, Control::hud, false},
-    {230, Control::spherical, true},  {231, Control::spherical, false},    {260, Control::hud, true},
-    {262, Control::hud, false},       {300, Control::hyperbolic, true},    {300, Control::hyperbolic, false},
+    {12, Action::thrust, true},      {40, Action::curvature_down, true}, {95, Action::curvature_down, false},
+    {130, Action::thrust, false},    {131, Action::left, true},          {150, Action::left, false},
+    {160, Action::projection, true}, {161, Action::projection, false},   {170, Action::preset, true},
+    {171, Action::preset, false},    {200, Action::hud, true},           {201, Action::hud, false},
+    {230, Action::spherical, true},  {231, Action::spherical, false},    {260, Action::hud, true},
+    {262, Action::hud, false},       {300, Action::hyperbolic, true},    {300, Action::hyperbolic, false},
 };
 
 void replays_exactly(world::EngineKind engine, double idle, int threads = 1) {
@@ -245,7 +245,7 @@ void replays_exactly(world::EngineKind engine, double idle, int threads = 1) {
         // released, the world reset.
         std::vector<Key> keys = kKeys;
         const bool interrupt = idle > 0 && format.bits_per_pixel == 16;
-        if (interrupt) keys.push_back({560, Control::left, true}), keys.push_back({575, Control::left, false});
+        if (interrupt) keys.push_back({560, Action::left, true}), keys.push_back({575, Action::left, false});
         app::Options o = app::defaults(app::Command::run);
         o.engine = engine, o.frames = idle > 0 ? 600 : 420, o.attract = idle, o.threads = threads, o.format = format;
         o.hud = true;
@@ -289,10 +289,10 @@ TEST(Recording, AWholeGameReplaysPixelExact) {
     o.scene = std::string(NONEUCLID_SOURCE_DIR) + "/tests/files/data/game.toml";
     o.frames = 1500, o.attract = 3, o.hud = true;
     o.scores = "none";
-    const std::vector<Key> keys = {{10, Control::fire, true},   {12, Control::fire, false},  {40, Control::fire, true},
-                                   {60, Control::left, true},   {95, Control::left, false},  {120, Control::thrust, true},
-                                   {150, Control::thrust, false}, {170, Control::right, true}, {230, Control::right, false},
-                                   {260, Control::fire, false}};
+    const std::vector<Key> keys = {{10, Action::fire, true},   {12, Action::fire, false},  {40, Action::fire, true},
+                                   {60, Action::left, true},   {95, Action::left, false},  {120, Action::thrust, true},
+                                   {150, Action::thrust, false}, {170, Action::right, true}, {230, Action::right, false},
+                                   {260, Action::fire, false}};
     const LiveRun live = run_live(o, keys, render::PixelFormat::rgb565());
     EXPECT_EQ(differing_bytes(replay(live.recording), live.last), 0);
     for (const char* line : {"press fire", "release fire", "attract on"})
@@ -413,16 +413,16 @@ TEST(Session, KeysSetKAndQuitStops) {
     const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys"), render::builtin_font(),
                                      nullptr);
     ASSERT_NE(s->curvature(), 1.0);
-    for (auto [c, K] : {std::pair{Control::spherical, 1.0}, {Control::hyperbolic, -1.0}, {Control::flat, 0.0}}) {
+    for (auto [c, K] : {std::pair{Action::spherical, 1.0}, {Action::hyperbolic, -1.0}, {Action::flat, 0.0}}) {
         const double before = s->curvature();
         s->queue({c, true});
         s->queue({c, false});
         EXPECT_EQ(s->curvature(), before) << "queued input waits for the step";
         s->step();
-        EXPECT_EQ(s->curvature(), K) << world::control_name(c);
+        EXPECT_EQ(s->curvature(), K) << world::action_name(c);
     }
     EXPECT_FALSE(s->quit());
-    s->queue({Control::quit, true});
+    s->queue({Action::quit, true});
     EXPECT_TRUE(s->quit());
 }
 

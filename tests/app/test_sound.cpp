@@ -200,13 +200,13 @@ TEST(Sound, TheSessionCuesFireAndHitInTheStepsTheGameDoesThem) {
     long bullet = 0;
     std::string line;
     for (long f = 0; f < 900; ++f) {
-        if (f == 10) s->queue({world::Control::fire, true});   // a new game
-        if (f == 12) s->queue({world::Control::fire, false});
-        if (f == 30) s->queue({world::Control::fire, true});   // held: a shot every cooldown
-        if (f == 100) s->queue({world::Control::thrust, true});
-        if (f == 130) s->queue({world::Control::thrust, false});
-        if (f == 5) s->queue({world::Control::thrust, true});  // no ship yet: no hum
-        if (f == 8) s->queue({world::Control::thrust, false});
+        if (f == 10) s->queue({world::Action::fire, true});   // a new game
+        if (f == 12) s->queue({world::Action::fire, false});
+        if (f == 30) s->queue({world::Action::fire, true});   // held: a shot every cooldown
+        if (f == 100) s->queue({world::Action::thrust, true});
+        if (f == 130) s->queue({world::Action::thrust, false});
+        if (f == 5) s->queue({world::Action::thrust, true});  // no ship yet: no hum
+        if (f == 8) s->queue({world::Action::thrust, false});
         s->step();
         line.clear();
         s->dump(320, 200, line);
@@ -225,11 +225,11 @@ TEST(Sound, TheSessionCuesFireAndHitInTheStepsTheGameDoesThem) {
     EXPECT_GT(hits, 0);
     EXPECT_GT(thrusts, 0);
     // The mute key turns the sound off and on.
-    s->queue({world::Control::mute, true});
+    s->queue({world::Action::mute, true});
     s->step();
     EXPECT_TRUE(s->sound().muted);
-    s->queue({world::Control::mute, false});
-    s->queue({world::Control::mute, true});
+    s->queue({world::Action::mute, false});
+    s->queue({world::Action::mute, true});
     s->step();
     EXPECT_FALSE(s->sound().muted);
 }

@@ -132,7 +132,7 @@ int run(const std::string& stage, const char* scene_name, int w, int h, render::
     if (K && std::strcmp(K, "zoom") == 0) wd.press(world::Action::curvature_down);
     if (game) {  // in play: fire held, turning, until the bullets are all in flight
         wd.press(world::Action::fire);
-        wd.press(world::Action::turn_left);
+        wd.press(world::Action::left);
         for (int i = 0; i < 60 * 2; ++i) wd.step(1.0 / 60);
         // Hits split asteroids: as many as asked for, the first ones kept.
         int kept = 0, flying = 0;

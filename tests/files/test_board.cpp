@@ -14,7 +14,7 @@ namespace {
 using namespace noneuclid;
 using files::Board;
 using files::BoardError;
-using world::Control;
+using world::Action;
 
 // ---- board files ---------------------------------------------------------------------------
 
@@ -46,19 +46,41 @@ TEST(Boards, EveryPiBoardWiresTheEightButtonsToMatchingHeaderPins) {
             if (bb.gpio < 0) continue;
             ++gpio_buttons;
             ASSERT_TRUE(kHeader.count(bb.pin)) << "pin " << bb.pin;
-            EXPECT_EQ(kHeader.at(bb.pin), bb.gpio) << world::control_name(bb.control) << ": header pin " << bb.pin;
+            EXPECT_EQ(kHeader.at(bb.pin), bb.gpio) << world::action_name(bb.control) << ": header pin " << bb.pin;
             // Not a pin the usual display/audio HATs or the I2C/SPI/UART defaults take.
             EXPECT_TRUE(bb.gpio != 2 && bb.gpio != 3 && bb.gpio != 14 && bb.gpio != 15) << bb.gpio;
         }
         EXPECT_EQ(gpio_buttons, 8);
         EXPECT_EQ(b.scene, "asteroids");  // the kiosk plays the game
         EXPECT_FALSE(b.sound) << "a kiosk is silent until its board turns the sound on";
-        for (Control c : {Control::thrust, Control::left, Control::right, Control::curvature_up, Control::curvature_down,
-                          Control::preset, Control::reset, Control::fire}) {
+        for (Action c : {Action::thrust, Action::left, Action::right, Action::curvature_up, Action::curvature_down,
+                          Action::preset, Action::reset, Action::fire}) {
             bool found = false;
             for (const auto& bb : b.buttons) found = found || (bb.control == c && bb.gpio >= 0 && bb.key > 0);
-            EXPECT_TRUE(found) << world::control_name(c);
+            EXPECT_TRUE(found) << world::action_name(c);
         }
+    }
+}
+
+// The action table (world/action.hpp) is where an action's keyboard key is: the plain keyboard
+// board binds exactly the actions the table gives a key code, and every board that binds a key
+// to an action binds the table's.
+TEST(Boards, EveryBoardsKeysAreTheActionTables) {
+    const Board generic = load("generic");
+    std::map<int, int> want, got;  // action -> key code
+    for (int i = 0; i < world::kActionCount; ++i)
+        if (world::kActions[i].evdev > 0) want[i] = world::kActions[i].evdev;
+    for (const auto& bb : generic.buttons) got[static_cast<int>(bb.control)] = bb.key;
+    EXPECT_EQ(got, want);
+    for (const char* name : {"generic", "rpi-zero2w", "rpi3", "rpi4", "rpi5"}) {
+        const Board b = load(name);
+        int keys = 0;
+        for (const auto& bb : b.buttons) {
+            if (bb.key < 0) continue;
+            ++keys;
+            EXPECT_EQ(bb.key, world::action_row(bb.control).evdev) << name << ": " << world::action_name(bb.control);
+        }
+        EXPECT_GE(keys, 8) << name;
     }
 }
 
@@ -158,7 +180,7 @@ std::string fields(const Board& b) {
     for (const std::string& m : b.models) s += "|model " + m;
     for (const std::string& c : b.chips) s += "|chip " + c;
     for (const auto& bb : b.buttons)
-        s += "|" + std::string(world::control_name(bb.control)) + " " + std::to_string(bb.gpio) + " " +
+        s += "|" + std::string(world::action_name(bb.control)) + " " + std::to_string(bb.gpio) + " " +
              std::to_string(bb.pin) + " " + std::to_string(bb.key);
     return s;
 }
@@ -203,10 +225,10 @@ TEST(BoardOverride, ItsButtonsReplaceAllOfTheBoards) {
     BoardError e;
     ASSERT_TRUE(files::overlay_board_file(path, b, e)) << e.to_string();
     ASSERT_EQ(b.buttons.size(), 2u);
-    EXPECT_EQ(b.buttons[0].control, Control::thrust);
+    EXPECT_EQ(b.buttons[0].control, Action::thrust);
     EXPECT_EQ(b.buttons[0].gpio, 6);
     EXPECT_EQ(b.buttons[0].key, -1);
-    EXPECT_EQ(b.buttons[1].control, Control::reset);
+    EXPECT_EQ(b.buttons[1].control, Action::reset);
     EXPECT_EQ(b.buttons[1].gpio, 17);  // rpi4's thrust line: no clash, the board's buttons are gone
     EXPECT_EQ(b.chips, std::vector<std::string>{"/dev/gpiochip1"});
     EXPECT_EQ(b.models, load("rpi4").models);

@@ -13,7 +13,7 @@
 #include "capi/noneuclid.h"
 #include "fixed/fixed.hpp"
 #include "files/board.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 #include "files/dump.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
@@ -116,9 +116,9 @@ std::string run_world(W& w, const app::Script& script, int frames, geo::Projecti
     const double dt = 1.0 / 60;
     for (int f = 0; f < frames; ++f) {
         while (const app::ScriptEvent* e = player.next_due(w.time)) {
-            world::Action a{};
+            const world::Action a = e->control;
             if (e->kind == app::ScriptEvent::attract_on || e->kind == app::ScriptEvent::attract_off) continue;
-            if (!world::control_action(e->control, a)) continue;  // the view's: projection, hud
+            if (!world::is_world_action(a)) continue;  // the view's: projection, hud
             if (e->kind == app::ScriptEvent::press || e->kind == app::ScriptEvent::tap) w.press(a);
             if (e->kind == app::ScriptEvent::release || e->kind == app::ScriptEvent::tap) w.release(a);
         }
@@ -208,7 +208,7 @@ void actions(std::string_view input) {
     for (std::size_t i = 0; i < s.events.size(); ++i) {
         FUZZ_CHECK(std::isfinite(s.events[i].time) && s.events[i].time >= 0, std::to_string(s.events[i].time));
         FUZZ_CHECK(i == 0 || s.events[i - 1].time <= s.events[i].time, "events out of order");
-        FUZZ_CHECK(s.events[i].control != world::Control::quit, "quit replayed");
+        FUZZ_CHECK(s.events[i].control != world::Action::quit, "quit replayed");
     }
     for (const app::Setting& st : s.settings) FUZZ_CHECK(world::is_plain(st.value) && !st.value.empty(), st.value);
     FUZZ_CHECK(!control_outside_comments(input), "a control byte accepted: " + text);

@@ -30,7 +30,7 @@ void bands_equal_whole(const char* scene_name, bool aa, int rows, bool keep_back
     world::Scene scene;
     ASSERT_TRUE(world::builtin_scene(scene_name, {}, scene));
     world::World<fx::fixed> w(scene);
-    for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) w.press(a);
+    for (world::Action a : {world::Action::thrust, world::Action::left, world::Action::curvature_down}) w.press(a);
     render::DrawScratch<fx::fixed> whole, banded;
     whole.prepare(w), banded.prepare(w);
     const int W = 240, H = 240;

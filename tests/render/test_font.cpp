@@ -182,7 +182,7 @@ TEST(FontBuiltin, GlyphForCodePoints) {
     EXPECT_EQ(f.glyph_for(U'~'), '~');
     EXPECT_EQ(f.glyph_for(U'\u00e9'), 0xE9);  // é: drawn (German and French)
     EXPECT_EQ(f.glyph_for(U'\U0001F600'), '?');
-    // Control characters and DEL look like '?'.
+    // Action characters and DEL look like '?'.
     for (int c : {0, 9, 27, 31, 127})
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 6; ++x)

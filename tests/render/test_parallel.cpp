@@ -34,7 +34,7 @@ void threaded_equals_serial(const char* scene_name, double K, geo::Projection pr
     scene.curvature = K;
     world::World<T, E> w(scene);
     if (v.controls)
-        for (world::Action a : {world::Action::thrust, world::Action::turn_left, world::Action::curvature_down}) w.press(a);
+        for (world::Action a : {world::Action::thrust, world::Action::left, world::Action::curvature_down}) w.press(a);
     render::DrawScratch<T, E> serial;
     serial.prepare(w);
     render::WorkerPool pool(threads);

@@ -22,22 +22,22 @@ World kiosk() {
 TEST(Play, AHeldActionActsOnceAndAPressActionOnEveryPress) {
     World w = kiosk();
     using render::Applied;
-    EXPECT_EQ(render::apply_control(w, world::Control::thrust, true), Applied::pressed);
+    EXPECT_EQ(render::apply_control(w, world::Action::thrust, true), Applied::pressed);
     EXPECT_TRUE(w.held(world::Action::thrust));
-    EXPECT_EQ(render::apply_control(w, world::Control::thrust, true), Applied::nothing);  // held already
-    EXPECT_EQ(render::apply_control(w, world::Control::thrust, false), Applied::released);
-    EXPECT_EQ(render::apply_control(w, world::Control::thrust, false), Applied::nothing);
+    EXPECT_EQ(render::apply_control(w, world::Action::thrust, true), Applied::nothing);  // held already
+    EXPECT_EQ(render::apply_control(w, world::Action::thrust, false), Applied::released);
+    EXPECT_EQ(render::apply_control(w, world::Action::thrust, false), Applied::nothing);
     EXPECT_FALSE(w.held(world::Action::thrust));
     // hyperbolic acts on each press: K is -1 after it, even pressed twice without a release.
     w.K = 0.5;
-    EXPECT_EQ(render::apply_control(w, world::Control::hyperbolic, true), Applied::pressed);
+    EXPECT_EQ(render::apply_control(w, world::Action::hyperbolic, true), Applied::pressed);
     EXPECT_EQ(w.K, -1.0);
     w.K = 0.5;
-    EXPECT_EQ(render::apply_control(w, world::Control::hyperbolic, true), Applied::pressed);
+    EXPECT_EQ(render::apply_control(w, world::Action::hyperbolic, true), Applied::pressed);
     EXPECT_EQ(w.K, -1.0);
     // The view's controls are the caller's.
-    EXPECT_EQ(render::apply_control(w, world::Control::projection, true), Applied::not_action);
-    EXPECT_EQ(render::apply_control(w, world::Control::hud, true), Applied::not_action);
+    EXPECT_EQ(render::apply_control(w, world::Action::projection, true), Applied::not_action);
+    EXPECT_EQ(render::apply_control(w, world::Action::hud, true), Applied::not_action);
 }
 
 TEST(Play, TheProjectionCycleVisitsEveryProjectionOnce) {
@@ -77,7 +77,7 @@ TEST(Play, TheGamesHudFollowsTheGame) {
     ASSERT_TRUE(h.on);
     EXPECT_EQ(h.screen, render::HudGame::ready);
     EXPECT_EQ(h.best, 42);
-    render::apply_control(w, world::Control::fire, true);  // fire starts a game
+    render::apply_control(w, world::Action::fire, true);  // fire starts a game
     w.step(1.0 / 60);
     h = render::hud_game(w, best);
     EXPECT_EQ(w.game().phase, world::GamePhase::playing);

@@ -95,7 +95,7 @@ TEST(UnevenMeasure, TheLiveTriangleIsMarkedWhereTheShipFlies) {
     w.press(world::Action::thrust);
     for (int mark = 0; mark < 3; ++mark) {
         for (int i = 0; i < 50; ++i) w.step(1.0 / 60);
-        if (mark == 1) w.press(world::Action::turn_left);
+        if (mark == 1) w.press(world::Action::left);
         w.press(world::Action::fire), w.release(world::Action::fire);
     }
     const auto& g = w.gauges().back();

@@ -59,13 +59,13 @@ TEST(UnevenWorld, WithoutBumpsItIsTheConstantKWorld) {
         world::World<double> c(s);
         uneven::World u(s);
         c.press(world::Action::thrust), u.press(world::Action::thrust);
-        c.press(world::Action::turn_left), u.press(world::Action::turn_left);
+        c.press(world::Action::left), u.press(world::Action::left);
         double worst = 0, worst_angle = 0;
         int wraps = 0;
         for (int step = 0; step < 10000; ++step) {
             if (step == 60) {
                 c.release(world::Action::thrust), u.release(world::Action::thrust);
-                c.release(world::Action::turn_left), u.release(world::Action::turn_left);
+                c.release(world::Action::left), u.release(world::Action::left);
             }
             c.step(1.0 / 60), u.step(1.0 / 60);
             for (std::size_t i = 0; i < u.bodies.size(); ++i) wraps += c.bodies[i].wrapped;
@@ -211,9 +211,9 @@ TEST(UnevenWorld, TheGamesBulletsCurveRoundTheMass) {
         w.press(world::Action::fire), w.release(world::Action::fire);
         w.step(1.0 / 60);
         ASSERT_EQ(w.game().phase, world::GamePhase::playing);
-        w.press(world::Action::turn_right);  // from facing up (90) to 10 degrees, 0.3 from the mass
+        w.press(world::Action::right);  // from facing up (90) to 10 degrees, 0.3 from the mass
         for (int i = 0; i < 40; ++i) w.step(1.0 / 60);
-        w.release(world::Action::turn_right);
+        w.release(world::Action::right);
         w.press(world::Action::fire);
         w.step(1.0 / 60);
         w.release(world::Action::fire);

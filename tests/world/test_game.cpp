@@ -369,8 +369,8 @@ TEST(Game, ASeedReplaysBitForBit) {
         w.press(Action::fire);
         hits = 0;
         for (int i = 0; i < 900; ++i) {
-            if (i % 97 == 10) w.press(Action::turn_left);
-            if (i % 97 == 40) w.release(Action::turn_left);
+            if (i % 97 == 10) w.press(Action::left);
+            if (i % 97 == 40) w.release(Action::left);
             if (i % 50 == 0) w.press(Action::fire);
             if (i % 50 == 25) w.release(Action::fire);
             w.step(1.0 / 60);

@@ -129,9 +129,9 @@ TEST(Instruments, TheLiveInstrumentTakesItsMarksWhereTheShipIs) {
     w.press(Action::thrust);
     for (int mark = 0; mark < 3; ++mark) {
         for (int i = 0; i < 40; ++i) w.step(1.0 / 60);
-        w.press(Action::turn_left);
+        w.press(Action::left);
         for (int i = 0; i < 30; ++i) w.step(1.0 / 60);
-        w.release(Action::turn_left);
+        w.release(Action::left);
         at.push_back({static_cast<double>(ship->centre.r), static_cast<double>(ship->centre.theta)});
         w.press(Action::fire), w.release(Action::fire);
         EXPECT_EQ(w.game().on(), false);

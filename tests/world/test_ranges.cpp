@@ -111,7 +111,7 @@ void run_and_check(W w, int frames, const char* engine, int scene_index, bool fi
         if (f % 40 == 0) {  // K down for a while, then up
             w.release(f % 80 ? world::Action::curvature_down : world::Action::curvature_up);
             w.press(f % 80 ? world::Action::curvature_up : world::Action::curvature_down);
-            w.press(f % 80 ? world::Action::turn_left : world::Action::turn_right);
+            w.press(f % 80 ? world::Action::left : world::Action::right);
         }
         w.step(1.0 / 60);
         std::string where;

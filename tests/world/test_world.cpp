@@ -114,7 +114,7 @@ TEST(Physics, ThrustAcceleratesAlongTheFacingAndSpinTurns) {
     EXPECT_NEAR(w.bodies[0].travel, kPi / 2, 1e-12);
     EXPECT_NEAR(w.bodies[0].centre.r, 0.3, 1e-2);  // ~a t^2 / 2, in 60 discrete steps
     w.release(Action::thrust);
-    w.press(Action::turn_left);
+    w.press(Action::left);
     for (int i = 0; i < 60; ++i) w.step(1.0 / 60);
     EXPECT_NEAR(w.bodies[0].speed, 0.6, 1e-12);  // turning does not change the velocity
     EXPECT_NEAR(angle_diff(w.bodies[0].facing, kPi / 2 + deg(s.turn_rate_deg)), 0, 1e-9);
@@ -192,12 +192,12 @@ TEST(Actions, CurvatureChangesLiveAndLeavesPolarNumbersAlone) {
 TEST(Actions, PresetsCycleAndResetRestores) {
     Scene s = one_body(-0.3, 1.0, 30, 0.5, 10);
     World<double> w(s);
-    w.press(Action::next_preset);
+    w.press(Action::preset);
     EXPECT_EQ(w.K, 0.0);
-    w.release(Action::next_preset);
-    w.press(Action::next_preset);
+    w.release(Action::preset);
+    w.press(Action::preset);
     EXPECT_EQ(w.K, 1.0);
-    w.press(Action::next_preset);
+    w.press(Action::preset);
     EXPECT_EQ(w.K, -1.0);
     for (int i = 0; i < 30; ++i) w.step(1.0 / 60);
     w.press(Action::reset);
@@ -205,7 +205,7 @@ TEST(Actions, PresetsCycleAndResetRestores) {
     EXPECT_EQ(w.bodies[0].centre.r, 1.0);
     s.presets = {0.25, 0.75};
     World<double> w2(s);
-    w2.press(Action::next_preset);
+    w2.press(Action::preset);
     EXPECT_EQ(w2.K, 0.25);
 }
 
@@ -237,10 +237,10 @@ std::string run(const Scene& s, const std::vector<Press>& presses, int frames) {
 TEST(Determinism, SameActionsSameResultBitForBit) {
     Scene s;
     ASSERT_TRUE(builtin_scene("kiosk", {}, s));
-    const std::vector<Press> ev = {{0.1, Action::thrust, true},          {0.5, Action::turn_left, true},
+    const std::vector<Press> ev = {{0.1, Action::thrust, true},          {0.5, Action::left, true},
                                    {0.9, Action::thrust, false},         {1.0, Action::curvature_down, true},
-                                   {1.4, Action::curvature_down, false}, {1.5, Action::next_preset, true},
-                                   {1.5, Action::next_preset, false},    {1.7, Action::spherical, true}};
+                                   {1.4, Action::curvature_down, false}, {1.5, Action::preset, true},
+                                   {1.5, Action::preset, false},    {1.7, Action::spherical, true}};
     EXPECT_EQ(run<World<fixed>>(s, ev, 120), run<World<fixed>>(s, ev, 120));
     EXPECT_EQ(run<World<double>>(s, ev, 120), run<World<double>>(s, ev, 120));
     using PaperWorld = World<double, noneuclid::geo::Paper>;
@@ -259,9 +259,9 @@ TEST(Actions, HyperbolicFlatSphericalSetKOnThePress) {
     EXPECT_EQ(w.K, -1.0);
     w.press(Action::flat);
     EXPECT_EQ(w.K, 0.0);
-    for (Action a : {Action::spherical, Action::hyperbolic, Action::flat, Action::next_preset, Action::reset})
+    for (Action a : {Action::spherical, Action::hyperbolic, Action::flat, Action::preset, Action::reset})
         EXPECT_TRUE(acts_on_press(a)) << action_name(a);
-    for (Action a : {Action::thrust, Action::turn_left, Action::turn_right, Action::curvature_up, Action::curvature_down,
+    for (Action a : {Action::thrust, Action::left, Action::right, Action::curvature_up, Action::curvature_down,
                      Action::fire})
         EXPECT_FALSE(acts_on_press(a)) << action_name(a);
 }

@@ -57,7 +57,7 @@ int64_t now_ns() {
 
 int main(int argc, char** argv) {
     namespace p = noneuclid::platform;
-    using noneuclid::world::Control;
+    using noneuclid::world::Action;
     // The counter must see both C (libgpiod) and C++ (operator new in libstdc++.a) allocations.
     g_counting = true;
     void* volatile c_block = std::malloc(16);
@@ -77,13 +77,13 @@ int main(int argc, char** argv) {
     if (argc == 4 && std::strcmp(argv[1], "gpio") == 0) {
         p::GpioConfig c;
         c.chips = {argv[2]};
-        c.buttons = {{Control::thrust, 0, 0}, {Control::left, 1, 0}, {Control::right, 2, 0}, {Control::curvature_up, 3, 0}};
+        c.buttons = {{Action::thrust, 0, 0}, {Action::left, 1, 0}, {Action::right, 2, 0}, {Action::curvature_up, 3, 0}};
         c.debounce_ms = 5;
         src = p::open_gpio(c, error);
         seconds = std::atof(argv[3]);
     } else if (argc == 3 && std::strcmp(argv[1], "evdev") == 0) {
         p::EvdevConfig c;
-        c.keys = {{Control::thrust, 103}, {Control::left, 105}};
+        c.keys = {{Action::thrust, 103}, {Action::left, 105}};
         src = p::open_evdev(c, error);
         seconds = std::atof(argv[2]);
     } else {

@@ -3,14 +3,14 @@
 #pragma once
 
 #include "linux/gpio_common.hpp"
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::test {
 
 inline platform::GpioConfig two_buttons() {
     platform::GpioConfig c;
     c.chips = {"pinctrl-bcm2711", "pinctrl-rp1"};
-    c.buttons = {{world::Control::thrust, 17, 11}, {world::Control::left, 27, 13}};
+    c.buttons = {{world::Action::thrust, 17, 11}, {world::Action::left, 27, 13}};
     return c;
 }
 

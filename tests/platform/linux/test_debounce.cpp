@@ -19,7 +19,7 @@
 namespace p = noneuclid::platform;
 namespace gd = noneuclid::platform::gpio_detail;
 using noneuclid::test::two_buttons;
-using noneuclid::world::Control;
+using noneuclid::world::Action;
 using noneuclid::world::InputEvent;
 
 namespace {
@@ -41,7 +41,7 @@ struct Tracker {
         std::string s;
         for (int n; (n = t.pop(ev, 8)) > 0;)
             for (int i = 0; i < n; ++i)
-                s += std::string(ev[i].pressed ? "+" : "-") + noneuclid::world::control_name(ev[i].control) + " ";
+                s += std::string(ev[i].pressed ? "+" : "-") + noneuclid::world::action_name(ev[i].control) + " ";
         return s;
     }
     gd::ButtonTracker t;
@@ -116,9 +116,9 @@ TEST(Debounce, PopHonoursMax) {
     k.t.edge(0, false, 0);
     InputEvent ev[2];
     EXPECT_EQ(k.t.pop(ev, 2), 2);
-    EXPECT_EQ(ev[0].control, Control::thrust);
+    EXPECT_EQ(ev[0].control, Action::thrust);
     EXPECT_TRUE(ev[0].pressed);
-    EXPECT_EQ(ev[1].control, Control::left);
+    EXPECT_EQ(ev[1].control, Action::left);
     EXPECT_EQ(k.drain(), "-thrust ");
 }
 
@@ -146,7 +146,7 @@ public:
         char c;
         while (n < max && ::read(fd_[0], &c, 1) == 1) {
             const bool pressed = c >= 'A' && c <= 'Z';
-            out[n++] = {pressed ? Control::thrust : Control::left, pressed};
+            out[n++] = {pressed ? Action::thrust : Action::left, pressed};
         }
         return n;
     }

@@ -24,7 +24,7 @@
 namespace p = noneuclid::platform;
 namespace gd = noneuclid::platform::gpio_detail;
 using noneuclid::test::two_buttons;
-using noneuclid::world::Control;
+using noneuclid::world::Action;
 using noneuclid::world::InputEvent;
 
 namespace {
@@ -76,12 +76,12 @@ TEST(GpioConfig, DebounceTooLong) {
 }
 
 TEST(GpioConfig, LineDescriptionNamesPinAndControl) {
-    EXPECT_EQ(gd::describe_line({Control::thrust, 17, 11}), "GPIO line 17 (thrust, header pin 11)");
-    EXPECT_EQ(gd::describe_line({Control::reset, 5, 0}), "GPIO line 5 (reset)");
+    EXPECT_EQ(gd::describe_line({Action::thrust, 17, 11}), "GPIO line 17 (thrust, header pin 11)");
+    EXPECT_EQ(gd::describe_line({Action::reset, 5, 0}), "GPIO line 5 (reset)");
 }
 
 TEST(GpioConfig, RequestErrors) {
-    const p::GpioButton b{Control::thrust, 17, 11};
+    const p::GpioButton b{Action::thrust, 17, 11};
     auto busy = gd::request_error(b, "pinctrl-bcm2711 (/dev/gpiochip0)", EBUSY, "gpio_keys");
     EXPECT_TRUE(contains(busy, "GPIO line 17 (thrust, header pin 11) on pinctrl-bcm2711 (/dev/gpiochip0) is in use by "
                                "\"gpio_keys\"")) << busy;
@@ -93,7 +93,7 @@ TEST(GpioConfig, RequestErrors) {
         EXPECT_TRUE(contains(perm, "sudo usermod -aG gpio $USER")) << perm;
         EXPECT_TRUE(contains(perm, "log in again")) << perm;
     }
-    auto range = gd::line_range_error({Control::left, 60, 0}, "pinctrl-bcm2711 (/dev/gpiochip0)", 58);
+    auto range = gd::line_range_error({Action::left, 60, 0}, "pinctrl-bcm2711 (/dev/gpiochip0)", 58);
     EXPECT_TRUE(contains(range, "GPIO line 60 (left) does not exist on pinctrl-bcm2711 (/dev/gpiochip0), which has 58 "
                                 "lines (0 to 57)")) << range;
 }
@@ -256,7 +256,7 @@ TEST(OpenGpio, NoChipWithTheLabel) {
 
 p::EvdevConfig two_keys() {
     p::EvdevConfig c;
-    c.keys = {{Control::thrust, 103}, {Control::left, 105}};
+    c.keys = {{Action::thrust, 103}, {Action::left, 105}};
     return c;
 }
 

@@ -9,7 +9,7 @@ namespace p = noneuclid::platform;
 TEST(OpenGpioWithoutLibgpiod, OneSentence) {
     p::GpioConfig c;
     c.chips = {"pinctrl-bcm2711"};
-    c.buttons = {{noneuclid::world::Control::thrust, 17, 11}};
+    c.buttons = {{noneuclid::world::Action::thrust, 17, 11}};
     std::string error;
     EXPECT_EQ(p::open_gpio(c, error), nullptr);
     EXPECT_EQ(error, "this build has no GPIO support: install libgpiod-dev and rebuild");
