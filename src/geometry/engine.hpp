@@ -14,6 +14,10 @@
 //   outline(K, b, cache, m, p, verts, vecs, sink)  body b's outline in projection p on screen
 //                           map m into a CurveSink (geometry/edge_curve.hpp); verts and vecs are
 //                           scratch room for its vertex count
+//   kFillsItsOutline        true: a filled body is filled inside the polyline outline() gives
+//                           (render/fill.hpp), for an engine whose outline is not the geodesic
+//                           polygon's image within a pixel; false: the fill follows the exact
+//                           geodesic polygon, which the engine's outline is within a pixel of
 // A body b is anything with centre, facing, travel, speed, accel_dir, coast, local (its vertices
 // in local polar coordinates), shape (its shape count), closed() and tessellation() (world::Body).
 #pragma once
@@ -45,6 +49,7 @@ template <class T>
 struct Exact {
     using scalar = T;
     using Cache = ShapeCache<T>;
+    static constexpr bool kFillsItsOutline = false;  // its outline follows the geodesics
 
     template <class B>
     static bool move(T K, B& b, const Tick<T>& dt) {
@@ -83,6 +88,9 @@ struct Exact {
 // edge at the body's tessellation level, in polar coordinates.
 struct Paper {
     using scalar = double;
+    // Its outline is the paper's: tessellation() chords an edge, which a large body's geodesic
+    // image (far out, in the stereographic view) leaves by many pixels; its fill is inside them.
+    static constexpr bool kFillsItsOutline = true;
     struct Cache {
         template <class B>
         void make(const B&) {}
@@ -137,6 +145,7 @@ template <class E>
 concept Engine = requires(typename E::scalar K, Polar<typename E::scalar> q, typename E::Cache cache) {
     typename E::scalar;
     { E::vertex(K, q, K, q) } -> std::same_as<Polar<typename E::scalar>>;
+    { E::kFillsItsOutline } -> std::convertible_to<bool>;
 };
 
 }  // namespace noneuclid::geo

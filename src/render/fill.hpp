@@ -76,7 +76,8 @@ struct FillScratch {
             const std::size_t n = b.local.size();
             f.index = i, f.per_edge = fill::edge_budget(n);
             f.local.assign(n, {}), f.world.assign(n, {}), f.outline.make(n);
-            f.points.assign(n * f.per_edge + 1, {});
+            f.points.assign(std::max(n * f.per_edge, points_of<typename W::engine>(b)) + 1, {});
+            if constexpr (W::engine::kFillsItsOutline) f.verts.assign(n, {});
             longest = std::max(longest, f.points.size());
             if (const world::Image* im = b.desc->texture.get()) f.texels = {texture_for(*im), b.desc->texture_bilinear};
         }
@@ -99,11 +100,68 @@ struct FillScratch {
         f.job.on = false;
         if (b.local.size() != f.local.size()) return nullptr;
         set_frame(world, b, m, o, f);
-        outline_polyline(f, m, width, height);
+        using E = typename W::engine;
+        if constexpr (E::kFillsItsOutline) engine_polyline<E>(world, b, f, m, o, width, height);
+        else outline_polyline(f, m, width, height);
         return f.job.on ? &f.job : nullptr;
     }
 
 private:
+    // The most points an engine that fills its outline gives a body's outline (else none).
+    template <class E, class B>
+    static std::size_t points_of(const B& b) {
+        if constexpr (E::kFillsItsOutline) return E::chords(b) + 1;
+        else return 0;
+    }
+
+    // An engine that fills its outline (geometry/engine.hpp): the polyline is the engine's
+    // outline itself, each pixel near it tested against that polyline (fill::Body::by_polyline),
+    // so fill and outline are one shape. A point the projection cannot show, or a body holding
+    // the antipode (whose picture the polyline does not bound), is tested pixel by pixel
+    // against the geodesic polygon instead (brute).
+    template <class E, class W>
+    void engine_polyline(const W& world, const world::Body<T>& b, fill::Body<T>& f, const ScreenMap<T>& m,
+                         const DrawOptions& o, int width, int height) {
+        struct Collect {
+            SubPoint* out;
+            std::size_t room, n = 0;
+            bool ok = true;
+            void add(const geo::Spot& s) {
+                if (!s.shown || n == room) ok = false;
+                else out[n++] = s.at;
+            }
+            void start(const geo::Spot& s) { add(s); }
+            void chord(const geo::Spot&, const geo::Spot& s) { add(s); }
+            void end() {}
+            bool stays_outside(SubPoint, SubPoint, SubPoint) const { return false; }
+        } sink{f.points.data(), f.points.size()};
+        typename E::Cache cache;
+        E::outline(world.K, b, cache, m, o.projection, f.verts.data(), f.world.data(), sink);
+        FillJob& j = f.job;
+        const bool antipode = f.frame.K > T(0) && f.outline.inside(antipode_local(f.frame), true);
+        if (!sink.ok || sink.n < 4 || antipode) return brute(f, width, height);
+        j.points = f.points.data(), j.count = sink.n;
+        j.zone = static_cast<int32_t>(fill::kSlack);
+        if (j.aa) j.zone = std::max(j.zone, kSub / 2 + j.zone);
+        f.by_polyline = true;
+        rows_of(f, sink.n, width, height);
+    }
+    // The antipode (-1, 0, 0) in the body's frame: -(the first column of to_local).
+    static geo::Vec3<T> antipode_local(const fill::Frame<T>& fr) {
+        return {-fr.to_local.m[0][0], -fr.to_local.m[1][0], -fr.to_local.m[2][0]};
+    }
+    // The job's rows: those of its polyline's points, widened by its zone.
+    // (lo and hi: rows the polyline's points must widen, 1/256 px: the rim's.)
+    static void rows_of(fill::Body<T>& f, std::size_t count, int width, int height, int64_t lo = INT64_MAX,
+                        int64_t hi = INT64_MIN) {
+        FillJob& j = f.job;
+        for (std::size_t k = 0; k < count; ++k) lo = std::min<int64_t>(lo, f.points[k].y), hi = std::max<int64_t>(hi, f.points[k].y);
+        j.top = static_cast<int>(std::clamp<int64_t>((lo - j.zone - kSub / 2 + kSub - 1) >> kSubBits, 0, height));
+        j.bottom = static_cast<int>(std::clamp<int64_t>(((hi + j.zone - kSub / 2) >> kSubBits) + 1, 0, height));
+        j.left = 0, j.right = width;
+        j.on = j.top < j.bottom;
+    }
+
     PackedTexture* texture_for(const world::Image& im) {
         for (auto& t : textures)
             if (t->image == &im) return t.get();
@@ -130,6 +188,7 @@ private:
         fr.K = K, fr.proj = o.projection, fr.m = m, fr.hemisphere = K > T(0);
         fr.to_local = geo::body_motion_inverse(K, b.centre, b.facing);
         f.job = FillJob{};
+        f.by_polyline = false;
         f.job.clip_cx = m.ox, f.job.clip_cy = m.oy, f.job.clip_r = m.clip;
         f.job.aa = o.antialias;
         f.job.solid = f.texels.tex == nullptr;
@@ -212,23 +271,18 @@ private:
         auto root = [](int64_t v) { return static_cast<int64_t>(fx::detail::isqrt64(static_cast<uint64_t>(v))); };
         j.zone = static_cast<int32_t>(std::min<int64_t>(std::max(root(worst) / 2, root(forced)) + fill::kSlack, int64_t{1} << 28));
         if (j.aa) j.zone = std::max(j.zone, kSub / 2 + j.zone);
-        int64_t lo = INT64_MAX, hi = INT64_MIN;
-        for (std::size_t k = 0; k < at; ++k) lo = std::min<int64_t>(lo, f.points[k].y), hi = std::max<int64_t>(hi, f.points[k].y);
-        if (fr.K > T(0)) {  // the antipode (-1, 0, 0), in the body's frame: -(the first column of to_local)
-            const geo::Vec3<T> A{-fr.to_local.m[0][0], -fr.to_local.m[1][0], -fr.to_local.m[2][0]};
-            if (f.outline.inside(A, true)) {
+        int64_t lo = INT64_MAX, hi = INT64_MIN;  // (the rim's rows, if it has one)
+        if (fr.K > T(0)) {
+            if (f.outline.inside(antipode_local(fr), true)) {
                 if (fr.proj != geo::Projection::azimuthal_equidistant) return brute(f, width, height);
                 using std::sqrt;
                 const T r = geo::pi_v<T> / sqrt(fr.K) * m.scale;  // px
                 const SubPoint c = to_pixels(geo::ScreenPoint<T>{m.cx, m.cy}), e = to_pixels(geo::ScreenPoint<T>{m.cx + r, m.cy});
                 j.rim = true, j.rim_cx = c.x, j.rim_cy = c.y, j.rim_r = int64_t{e.x} - c.x;
-                lo = std::min(lo, j.rim_cy - j.rim_r), hi = std::max(hi, j.rim_cy + j.rim_r);
+                lo = j.rim_cy - j.rim_r, hi = j.rim_cy + j.rim_r;
             }
         }
-        j.top = static_cast<int>(std::clamp<int64_t>((lo - j.zone - kSub / 2 + kSub - 1) >> kSubBits, 0, height));
-        j.bottom = static_cast<int>(std::clamp<int64_t>(((hi + j.zone - kSub / 2) >> kSubBits) + 1, 0, height));
-        j.left = 0, j.right = width;
-        j.on = j.top < j.bottom;
+        rows_of(f, at, width, height, lo, hi);
     }
     // Every pixel of the canvas tested: a body the polyline cannot follow.
     static void brute(fill::Body<T>& f, int width, int height) {

@@ -250,6 +250,8 @@ struct Body {
     std::vector<SubPoint> points;            // the polyline's room
     std::size_t per_edge = 2;                // the most segments an edge's polyline may have
     LocalOutline<T> outline;
+    std::vector<geo::Polar<T>> verts;  // an engine's outline's scratch (render/fill.hpp)
+    bool by_polyline = false;          // pixels tested against the job's polyline (else the outline)
     Frame<T> frame;
     PixelMap<T> pixels;
     TexelMap texels;  // (texels.tex null: one colour)
@@ -320,13 +322,28 @@ void span(const void* body, const Canvas& c, int y, int x0, int x1) {
         });
     });
 }
+// Whether pixel (x, y)'s centre is inside the job's closed polyline (even-odd), for a body
+// filled inside its engine's outline (Body::by_polyline).
+inline bool inside_polyline(const FillJob& j, int x, int y) {
+    const int64_t px = int64_t{x} * kSub + kSub / 2, py = int64_t{y} * kSub + kSub / 2;
+    bool in = false;
+    for (std::size_t i = 0, k = j.count - 1; i < j.count; k = i++) {
+        const SubPoint a = j.points[i], b = j.points[k];
+        if ((a.y > py) == (b.y > py)) continue;
+        // x of the edge at py, compared without division: (px - a.x)(b.y - a.y) < (b.x - a.x)(py - a.y)
+        const int64_t lhs = (px - a.x) * (int64_t{b.y} - a.y), rhs = (int64_t{b.x} - a.x) * (py - a.y);
+        if ((b.y > a.y) ? lhs < rhs : lhs > rhs) in = !in;
+    }
+    return in;
+}
+
 // FillJob::test: each pixel tested, then painted (anti-aliased: with its coverage).
 template <class T>
 void test(const void* body, const Canvas& c, int y, int x0, int x1, const RowCover* cover) {
     const Body<T>& b = *static_cast<const Body<T>*>(body);
     const PixelWriter out{c};
     for_pixels(b, y, x0, x1, [&](int x, bool ok, const geo::Vec3<T>& L) {
-        const bool in = ok && b.outline.inside(L, b.frame.hemisphere);
+        const bool in = b.by_polyline ? inside_polyline(b.job, x, y) : ok && b.outline.inside(L, b.frame.hemisphere);
         const int alpha = cover ? fill_coverage(*cover, x, in) : in ? 255 : 0;
         if (alpha <= 0 || (!ok && !b.job.solid)) return;
         uint32_t w = b.job.word;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 #include <vector>
@@ -74,3 +76,89 @@ TEST(FillEngines, FixedDrawsDoublesTexelsWithinOne) {
 }
 
 }  // namespace
+
+// Each engine fills the shape it outlines: the paper engine (its own vertices and edge points,
+// geometry/paper.hpp) against its own outline. Every boundary pixel of the fill (lit, with an
+// unlit 4-neighbour) has its centre within 1 px of the outline's polyline, and every point of
+// the polyline is within 1 px of a boundary pixel's centre, for a large hexagon (edges of 0.9
+// on a body of radius 0.9, where a chord sags most) at K in {-1, -0.5, 0, 0.5, 1}, near O and
+// far out, in the equidistant and stereographic views.
+double to_segment(double px, double py, double ax, double ay, double bx, double by) {
+    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    const double t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+
+TEST(FillEngines, ThePaperEngineFillsTheShapeItOutlines) {
+    using W = world::World<double, geo::Paper>;
+    double worst_fill = 0, worst_line = 0;
+    for (double K : {-1.0, -0.5, 0.0, 0.5, 1.0})
+        for (double r : {0.3, 1.4})
+            for (geo::Projection p : {geo::Projection::azimuthal_equidistant, geo::Projection::stereographic}) {
+                SCOPED_TRACE(::testing::Message() << "K " << K << " r " << r << " projection " << static_cast<int>(p));
+                world::Scene sc;
+                sc.curvature = K;
+                world::SceneBody b;
+                b.name = "hexagon";
+                for (double phi : {0, 60, 120, 180, 240, 300}) b.vertices.push_back({0.9, phi});
+                b.r = r, b.theta_deg = 30, b.facing_deg = 10;
+                b.filled = true, b.fill = {200, 200, 200};
+                sc.bodies.push_back(b);
+                W w(sc);
+                render::DrawScratch<double, geo::Paper> s;
+                s.prepare(w);
+                std::vector<uint8_t> px(kEnginesW * kEnginesH * 4, 0);
+                const render::Canvas c{px.data(), kEnginesW, kEnginesH, kEnginesW * 4, render::PixelFormat::xrgb8888()};
+                render::DrawOptions o;
+                o.projection = p, o.antialias = false;
+                const auto m = render::ScreenMap<double>::of(c, w.K, w.R, o.projection);
+                s.fill.begin_frame(c);
+                const render::FillJob* j = s.fill.plan(w, 0, m, o, kEnginesW, kEnginesH);
+                ASSERT_NE(j, nullptr);
+                render::fill_rows(c, *j, 0, kEnginesH, s.fill.work[0]);
+                const std::size_t n = render::body_screen_points(w, w.bodies[0], s.shapes[0], m, o, s.vertices.data(),
+                                                                 s.vectors.data(), s.points.data());
+                std::vector<std::pair<double, double>> line;
+                const double gap = std::nan("");  // (a break: where the view's edge cuts the outline)
+                for (std::size_t k = 0; k < n; ++k) {
+                    const bool cut = s.points[k].x == render::kBreak.x && s.points[k].y == render::kBreak.y;
+                    line.push_back(cut ? std::pair{gap, gap} : std::pair{s.points[k].x / double(render::kSub), s.points[k].y / double(render::kSub)});
+                }
+                ASSERT_GE(line.size(), 6u);
+                auto lit = [&](int x, int y) {
+                    return x >= 0 && y >= 0 && x < kEnginesW && y < kEnginesH && c.get(x, y).r > 100;
+                };
+                // (The view's edge cuts both: pixels and points within 1.5 px of it are not the outline's.)
+                auto near_clip = [&](double x, double y) {
+                    return std::abs(std::hypot(x - j->clip_cx / double(render::kSub), y - j->clip_cy / double(render::kSub)) -
+                                    j->clip_r / double(render::kSub)) < 1.5;
+                };
+                std::vector<std::pair<double, double>> edge;
+                for (int y = 0; y < kEnginesH; ++y)
+                    for (int x = 0; x < kEnginesW; ++x)
+                        if (lit(x, y) && (!lit(x - 1, y) || !lit(x + 1, y) || !lit(x, y - 1) || !lit(x, y + 1)) &&
+                            !near_clip(x + 0.5, y + 0.5))
+                            edge.push_back({x + 0.5, y + 0.5});
+                ASSERT_GT(edge.size(), 50u);
+                for (auto [ex, ey] : edge) {
+                    double d = 1e9;
+                    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+                        if (!std::isnan(line[k].first) && !std::isnan(line[k + 1].first))
+                            d = std::min(d, to_segment(ex, ey, line[k].first, line[k].second, line[k + 1].first, line[k + 1].second));
+                    worst_fill = std::max(worst_fill, d);
+                    EXPECT_LE(d, 1.0) << "fill edge pixel " << ex << "," << ey;
+                }
+                for (std::size_t k = 0; k + 1 < line.size(); ++k)
+                    for (int t = 0; t < 8 && !std::isnan(line[k].first + line[k + 1].first); ++t) {  // along each chord
+                        const double qx = line[k].first + (line[k + 1].first - line[k].first) * t / 8;
+                        const double qy = line[k].second + (line[k + 1].second - line[k].second) * t / 8;
+                        if (near_clip(qx, qy)) continue;
+                        double d = 1e9;
+                        for (auto [ex, ey] : edge)  // (to the pixel's square: a corner's point may be off every centre)
+                            d = std::min(d, std::hypot(std::max(std::abs(qx - ex) - 0.5, 0.0), std::max(std::abs(qy - ey) - 0.5, 0.0)));
+                        worst_line = std::max(worst_line, d);
+                        EXPECT_LE(d, 1.0) << "outline point " << qx << "," << qy;
+                    }
+            }
+    std::printf("paper engine: fill edge to outline at most %.3f px, outline to fill edge %.3f px\n", worst_fill, worst_line);
+}
