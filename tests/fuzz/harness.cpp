@@ -16,6 +16,7 @@
 #include "world/action.hpp"
 #include "files/dump.hpp"
 #include "world/quote.hpp"
+#include "world/engines.hpp"
 #include "world/ranges.hpp"
 #include "files/scene_file.hpp"
 #include "files/toml_reader.hpp"
@@ -165,7 +166,8 @@ void board(std::string_view input) {
         check_sentence(e.to_string(), "b.toml", e.line, e.column, true);
         return;
     }
-    FUZZ_CHECK(b.engine == "fixed" || b.engine == "double" || b.engine == "float", b.engine);
+    world::EngineKind engine{};  // none (the scene's kind's first), or one a board may name
+    FUZZ_CHECK(b.engine.empty() || (world::parse_engine(b.engine, engine) && world::engine_on_board(engine)), b.engine);
     FUZZ_CHECK(in(b.fps, 1, 1000) && b.threads >= 1 && b.threads <= 16, b.file);
     for (const std::string& s : {b.name, b.device, b.scene, b.evdev_device}) FUZZ_CHECK(world::is_plain(s), s);
     for (const std::string& s : b.chips) FUZZ_CHECK(world::is_plain(s), s);
