@@ -18,6 +18,7 @@
 #include "render/palette.hpp"
 #include "render/play.hpp"
 #include "kinds/kinds.hpp"
+#include "kinds/step.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::mcu {
@@ -27,7 +28,7 @@ namespace {
 // the scene is checked to be of this kind, whose Capabilities say firmware).
 using Kind = kinds::Constant<world::World<fx::fixed>>;
 using World = Kind::World;
-constexpr double kDt = 1.0 / 60;  // world seconds a step: the program's
+constexpr double kDt = kinds::kStepSeconds;  // world seconds a step: the program's
 
 // The picture, drawn a band of rows at a time (Canvas::band), each band presented when drawn:
 // RAM holds half a frame. Static, so that it is counted in the firmware's RAM, never on the heap.

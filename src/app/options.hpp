@@ -11,6 +11,7 @@
 
 #include "app/args.hpp"
 #include "fixed/accuracy.hpp"
+#include "kinds/step.hpp"
 #include "world/engines.hpp"
 #include "app/script.hpp"
 #include "geometry/measure.hpp"
@@ -46,7 +47,7 @@ struct Options {
     std::string actions;
     world::SceneParams params;
     long frames = 60;           // run: 0, until closed
-    double dt = 1.0 / 60;       // dump, render; run steps 1/60 s a frame
+    double dt = kinds::kStepSeconds;  // dump, render; run steps kStepSeconds a frame
     int width = 800, height = 480;
     geo::Projection projection = geo::Projection::azimuthal_equidistant;
     // The picture (render, run)

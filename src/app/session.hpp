@@ -14,6 +14,7 @@
 
 #include "app/autopilot.hpp"
 #include "kinds/kinds.hpp"
+#include "kinds/step.hpp"
 #include "app/script.hpp"
 #include "app/sound.hpp"
 #include "render/canvas.hpp"
@@ -40,7 +41,7 @@ struct SessionOptions {
     lang::Language language = lang::Language::en;  // of the HUD's words
     AttractOptions attract{0, 40, 0.25};  // idle_seconds 0: off
     int threads = 1;              // drawing threads (a pool started once); the same pixels
-    double dt = 1.0 / 60;         // world seconds per step
+    double dt = kinds::kStepSeconds;  // world seconds per step
     long best = 0;                // a game's high score before this session (its HUD shows it)
     bool muted = false;           // the sound starts muted (the mute control turns it on and off)
 };

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "capi/world_handle.hpp"
+#include "kinds/step.hpp"
 #include "files/scene_file.hpp"
 #include "files/text_file.hpp"
 #include "geometry/projection.hpp"
@@ -25,6 +26,7 @@ static_assert(NW_VERSION_MAJOR == NONEUCLID_VERSION_MAJOR && NW_VERSION_MINOR ==
 struct nw_world {
     std::unique_ptr<noneuclid::capi::WorldHandle> world;
     noneuclid::render::DrawOptions draw;
+    noneuclid::kinds::StepClock clock;  // nw_advance's seconds not yet stepped
 };
 
 namespace {
@@ -160,6 +162,21 @@ nw_status nw_step(nw_world* w, long steps) {
         return fail(NW_ERR_RANGE, "nw_step: " + std::to_string(steps) + " steps: ask for 0 to 1000000 at a time.");
     return guarded("nw_step", [&] {
         w->world->step(steps);
+        return NW_OK;
+    });
+}
+
+nw_status nw_advance(nw_world* w, double seconds, long* steps) {
+    if (!w) return null_arg("nw_advance", "the world");
+    if (!(seconds >= 0 && seconds <= kMaxSteps * noneuclid::kinds::kStepSeconds)) {
+        char given[64];
+        std::snprintf(given, sizeof given, "%g", seconds);
+        return fail(NW_ERR_RANGE, std::string("nw_advance: ") + given + " seconds: ask for 0 to 16666 at a time.");
+    }
+    return guarded("nw_advance", [&] {
+        const long n = w->clock.steps_for(seconds);
+        w->world->step(n);
+        if (steps) *steps = n;
         return NW_OK;
     });
 }

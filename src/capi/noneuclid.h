@@ -79,6 +79,10 @@ NW_API void nw_world_free(nw_world* w);
 
 /* `steps` steps of 1/60 s world time, 0 to 1000000 per call. */
 NW_API nw_status nw_step(nw_world* w, long steps);
+/* `seconds` of time (a frame's, 0 to 16666) in whole steps of 1/60 s: the part short of a step
+ * is kept and added to the next call's, so that a loop with uneven frame times moves the world
+ * in the same equal steps as nw_step. The steps taken into *steps if not NULL. */
+NW_API nw_status nw_advance(nw_world* w, double seconds, long* steps);
 /* World seconds and steps so far. */
 NW_API nw_status nw_clock(const nw_world* w, double* seconds, long* steps);
 

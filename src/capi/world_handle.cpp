@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "files/dump.hpp"
+#include "kinds/step.hpp"
 #include "render/worker_pool.hpp"
 #include "render/play.hpp"
 
@@ -33,7 +34,7 @@ public:
     }
 
     void step(long steps) override {
-        for (long i = 0; i < steps; ++i) world_.step(kDt);
+        for (long i = 0; i < steps; ++i) world_.step(kinds::kStepSeconds);
         list_bodies();
     }
     double time() const override { return world_.time; }
@@ -91,7 +92,6 @@ public:
     }
 
 private:
-    static constexpr double kDt = 1.0 / 60;  // the program's step (render, dump, run)
 
     // The active bodies' indices, into the room reserved for all of them: no allocation.
     void list_bodies() {

@@ -219,6 +219,41 @@ TEST(CApi, ControlsAndCurvature) {
     EXPECT_NEAR(t, 2.0, 1e-12);
 }
 
+// nw_advance: uneven frame times make the same equal steps as nw_step, the remainder carried.
+// The reference: the whole steps in the running sum of the seconds given, and the world the
+// same as one stepped that many times by nw_step (the same K after curvature_up held).
+TEST(CApi, AdvanceStepsUnevenFramesEvenly) {
+    World a, b;
+    ASSERT_EQ(nw_world_from_name("kiosk", "double", &a.w), NW_OK);
+    ASSERT_EQ(nw_world_from_name("kiosk", "double", &b.w), NW_OK);
+    ASSERT_EQ(nw_control(a.w, "curvature_up", 1), NW_OK);
+    ASSERT_EQ(nw_control(b.w, "curvature_up", 1), NW_OK);
+    const double frames[] = {0.010, 0.033, 0.007, 0.050, 0.0166, 0.1, 0.002, 0.021};
+    double sum = 0;
+    long total = 0;
+    for (int round = 0; round < 10; ++round)
+        for (double f : frames) {
+            long n = -1;
+            ASSERT_EQ(nw_advance(a.w, f, &n), NW_OK);
+            ASSERT_GE(n, 0);
+            total += n, sum += f;
+            EXPECT_EQ(total, static_cast<long>(std::floor(sum * 60 + 1e-6))) << "after " << sum << " s";
+        }
+    ASSERT_EQ(nw_step(b.w, total), NW_OK);
+    double ka = 0, kb = 1;
+    long sa = 0, sb = 0;
+    ASSERT_EQ(nw_curvature(a.w, &ka), NW_OK);
+    ASSERT_EQ(nw_curvature(b.w, &kb), NW_OK);
+    EXPECT_EQ(ka, kb);
+    ASSERT_EQ(nw_clock(a.w, nullptr, &sa), NW_OK);
+    ASSERT_EQ(nw_clock(b.w, nullptr, &sb), NW_OK);
+    EXPECT_EQ(sa, sb);
+    EXPECT_EQ(nw_advance(a.w, -0.1, nullptr), NW_ERR_RANGE);
+    EXPECT_EQ(nw_advance(a.w, std::nan(""), nullptr), NW_ERR_RANGE);
+    EXPECT_NE(std::string(nw_last_error()).find("nw_advance"), std::string::npos);
+    EXPECT_EQ(nw_advance(nullptr, 1, nullptr), NW_ERR_NULL);
+}
+
 TEST(CApi, GameEventsAndBodies) {
     World w;
     ASSERT_EQ(nw_world_from_name("asteroids", nullptr, &w.w), NW_OK);
