@@ -10,7 +10,7 @@
 
 #include <cstdint>
 
-#include "world/controls.hpp"
+#include "world/action.hpp"
 
 namespace noneuclid::boards::mcu_st7789 {
 
@@ -23,13 +23,13 @@ inline constexpr uint8_t kDisplayDc = 2, kDisplayCs = 3, kDisplayReset = 4, kDis
 
 struct Button {
     uint8_t pin;              // to ground when pressed; the pin's pull-up holds it high
-    world::Control control;
+    world::Action control;
 };
 inline constexpr Button kButtons[4] = {
-    {8, world::Control::left},
-    {9, world::Control::right},
-    {10, world::Control::thrust},
-    {11, world::Control::fire},
+    {8, world::Action::left},
+    {9, world::Action::right},
+    {10, world::Action::thrust},
+    {11, world::Action::fire},
 };
 
 // The core's clock, for the HAL's delays.

@@ -230,6 +230,24 @@ EMSCRIPTEN_KEEPALIVE const char* nw_scenes() {
     return names.c_str();
 }
 
+// A menu's choices, one a line, "value<TAB>label", from the program's tables: "projection",
+// "engine" or "language" (their menus on the page are these, so a new row is a new choice).
+EMSCRIPTEN_KEEPALIVE const char* nw_choices(const char* menu) {
+    static std::string lines;
+    lines.clear();
+    const std::string_view m = menu ? menu : "";
+    if (m == "projection")
+        for (const std::string& n : noneuclid::geo::projection_names()) lines += n + "\t" + n + "\n";
+    if (m == "engine")
+        for (const std::string& n : noneuclid::world::engine_names()) lines += n + "\t" + n + "\n";
+    if (m == "language")
+        for (int l = 0; l < noneuclid::lang::kLanguages; ++l) {
+            const auto language = static_cast<noneuclid::lang::Language>(l);
+            lines += std::string(noneuclid::lang::language_code(language)) + "\t" + noneuclid::lang::language_name(language) + "\n";
+        }
+    return lines.c_str();
+}
+
 // The run's state, for the page's status line.
 EMSCRIPTEN_KEEPALIVE double nw_curvature() { return g_run ? g_run->session().curvature() : 0; }
 EMSCRIPTEN_KEEPALIVE double nw_frame() { return g_run ? static_cast<double>(g_run->session().frame()) : 0; }

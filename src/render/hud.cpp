@@ -71,10 +71,8 @@ const char* curvature_word(double K, lang::Language language) {
 }
 
 const char* projection_words(geo::Projection p, lang::Language language) {
-    constexpr Text kWords[] = {Text::equidistant, Text::stereographic, Text::gnomonic, Text::orthographic, Text::lambert};
-    static_assert(std::size(kWords) == std::size(geo::kProjections), "a projection without its words");
-    const auto i = static_cast<std::size_t>(p);
-    return i < std::size(kWords) ? lang::text(kWords[i], language) : geo::projection_name(p);
+    Text word;  // the text named as the projection is (lang/texts.hpp)
+    return lang::text_named(geo::projection_name(p), word) ? lang::text(word, language) : geo::projection_name(p);
 }
 
 void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {

@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/projection.hpp"
 #include "world/earth_data.hpp"
 #include "world/sphere_lines.hpp"
 
@@ -96,16 +97,11 @@ double midpoint_bend_px(SceneBody::Vertex a, SceneBody::Vertex b, SceneBody::Ver
     const H3 p = hyperboloid(a), q = hyperboloid(b), s{p.t + q.t, p.x + q.x, p.y + q.y};
     const double n = std::sqrt(minkowski(s, s));
     const double gr = std::acosh(std::fmax(s.t / n, 1.0)), ga = std::atan2(s.y, s.x), ma = m.phi_deg * kDeg;
-    using View = double (*)(double);
-    static constexpr View kViews[] = {
-        [](double r) { return r; },                       // equidistant
-        [](double r) { return 2 * std::tanh(r / 2); },    // stereographic
-        [](double r) { return std::tanh(r); },            // gnomonic
-        [](double r) { return std::sinh(r); },            // orthographic
-        [](double r) { return 2 * std::sinh(r / 2); },    // Lambert
-    };
     double worst = 0;
-    for (View f : kViews) {
+    for (geo::Projection p : geo::kProjections) {
+        auto f = [p](double r) {
+            return geo::with_projection(p, [r](auto P) { return decltype(P)::project(-1.0, r).rho; });
+        };
         const double k = kDiscPx / f(kPi), g = f(gr) * k, h = f(m.rho) * k;
         worst = std::fmax(worst, std::hypot(g * std::cos(ga) - h * std::cos(ma), g * std::sin(ga) - h * std::sin(ma)));
     }

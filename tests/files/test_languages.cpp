@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "files/lesson_file.hpp"
+#include "geometry/projection.hpp"
 #include "lang/lang.hpp"
 #include "render/font.hpp"
 
@@ -81,6 +82,15 @@ TEST(Languages, EveryCatalogueHasEveryTextOnce) {
             EXPECT_EQ(seen[i], 1) << lang::language_code(l) << " has " << seen[i] << " texts named " << name
                                   << " (each needs exactly one)";
         }
+    }
+}
+
+// The HUD names a projection by the text named as it is (render/hud.cpp): every projection of
+// the table has one, so a new projection's word is in every language's file.
+TEST(Languages, EveryProjectionHasItsWord) {
+    for (geo::Projection p : geo::kProjections) {
+        lang::Text t;
+        EXPECT_TRUE(lang::text_named(geo::projection_name(p), t)) << geo::projection_name(p) << ": add it to lang/texts.hpp";
     }
 }
 

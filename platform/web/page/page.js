@@ -187,6 +187,17 @@
   // The address says what is seen (scene, K, projection, engine), so that a copied link shows it:
   // rewritten at most twice a second, and left alone while an actions file plays (the file says
   // it) or for a scene pasted into the page (no address has it).
+  // A menu's choices from the program's tables (nw_choices: "value\tlabel" lines).
+  function fillMenu(id) {
+    const lines = mod.UTF8ToString(mod.ccall('nw_choices', 'number', ['string'], [id])).split('\n').filter(Boolean);
+    $(id).replaceChildren(...lines.map((line) => {
+      const [value, label] = line.split('\t');
+      const o = document.createElement('option');
+      o.value = value, o.textContent = label;
+      return o;
+    }));
+  }
+
   function linkState(K, projection) {
     const now = performance.now();
     if (now < linkDue || lastWords.includes('--actions')) return;
@@ -415,6 +426,7 @@
     printErr: (text) => console.warn(text),
   }).then(async (m) => {
     mod = m;
+    for (const menu of ['projection', 'engine', 'language']) fillMenu(menu);
     language.load(mod, params);
     sound.show();
     builtins = mod.UTF8ToString(mod._nw_scenes()).split('\n').filter(Boolean);

@@ -1,0 +1,12 @@
+# The engine's source files, by library, relative to src/: src/CMakeLists.txt builds its
+# libraries from these lists and the microcontroller firmware (platform/mcu/CMakeLists.txt) its
+# engine, so a new file of a part both use is named here once.
+set(noneuclid_fixed_sources fixed/tables.cpp fixed/accuracy.cpp)
+set(noneuclid_world_sources world/instruments.cpp world/scenes.cpp world/images.cpp world/game_scene.cpp
+    world/budget.cpp world/quote.cpp world/ranges.cpp world/earth.cpp world/sphere_lines.cpp)
+set(noneuclid_lang_sources lang/lang.cpp lang/de.cpp lang/fr.cpp)
+# The rasteriser's part that needs no threads (the firmware's), then the rest.
+set(noneuclid_render_core_sources render/raster.cpp render/backdrop.cpp render/fill_rows.cpp render/texture.cpp
+    render/hud.cpp render/palette.cpp render/font.cpp render/font_builtin.cpp)
+set(noneuclid_render_sources ${noneuclid_render_core_sources} render/parallel_frame.cpp render/worker_pool.cpp
+    render/measure_panel.cpp)
