@@ -29,8 +29,9 @@ int dump_command(int argc, char** argv, int first) {
     const world::Scene scene = load_scene(o);
     Options plain = o;
     plain.attract = 0, plain.threads = 1, plain.hud = false;
+    const kinds::KindChoice kind = world_kind(o, scene);
     const std::unique_ptr<Session> s =
-        make_session(world_kind(o, scene), scene, session_options(plain, scene, o.legend), render::builtin_font(), nullptr);
+        make_session(kind, scene, session_options(plain, scene, o.legend, kind), render::builtin_font(), nullptr);
     ScriptPlayer player(script.events);
     std::string line;
     s->start(player);

@@ -26,8 +26,9 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
     out.canvas = render::Canvas(out.pixels.data(), o.width, o.height, stride, o.format);
     Options plain = o;
     plain.attract = 0, plain.threads = 1;
-    const SessionOptions so = session_options(plain, scene, o.legend);
-    const std::unique_ptr<Session> s = make_session(world_kind(o, scene), scene, so, font, nullptr);
+    const kinds::KindChoice kind = world_kind(o, scene);
+    const SessionOptions so = session_options(plain, scene, o.legend, kind);
+    const std::unique_ptr<Session> s = make_session(kind, scene, so, font, nullptr);
     const uint32_t background = o.format.pack(so.draw.background);
 
     std::vector<uint8_t> trail;

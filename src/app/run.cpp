@@ -17,7 +17,7 @@ void compose_run(LiveRun& run, Options& o, const Script& script, Display& displa
     const kinds::KindChoice kind = world_kind(o, run.scene);
     o.engine = kind.engine;  // (recorded: the replay runs on the engine this run did)
     if (recorder) record_settings(*recorder, o, display_name, run.font, display.canvas().format());
-    run.session = make_session(kind, run.scene, session_options(o, run.scene, o.legend), run.font.font, recorder, scores);
+    run.session = make_session(kind, run.scene, session_options(o, run.scene, o.legend, kind), run.font.font, recorder, scores);
     LoopOptions lo;
     lo.frames = o.frames, lo.fps = o.fps, lo.stats = o.stats, lo.screenshot = o.screenshot;
     run.loop = std::make_unique<FrameLoop>(display, *run.session, o.actions.empty() ? nullptr : &script, recorder, lo);

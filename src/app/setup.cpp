@@ -128,7 +128,8 @@ lang::Language resolve_language(const Options& o) {
     return l;
 }
 
-SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend) {
+SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend,
+                               kinds::KindChoice kind) {
     SessionOptions so;
     so.draw.projection = o.projection;
     so.draw.antialias = o.aa;
@@ -148,7 +149,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.language = resolve_language(o);
     using lang::Text;
     const bool keys = legend == "keys";
-    Text words = kinds::with_kind(world_kind(o, scene), [&]<class WK>(std::type_identity<WK>) { return WK::legend(keys, scene); });
+    Text words = kinds::with_kind(kind, [&]<class WK>(std::type_identity<WK>) { return WK::legend(keys, scene); });
     if (o.one_button) words = scene.game.on ? Text::legend_one_button_game : Text::legend_one_button;
     so.legend = lang::text(words, so.language);
     so.attract.idle_seconds = o.attract;

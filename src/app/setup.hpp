@@ -46,7 +46,9 @@ void check_outputs(const Options& o);
 // (platform::locale_name), else English.
 lang::Language resolve_language(const Options& o);
 
-// The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend.
-SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend);
+// The session's options for o, with `legend` ("keys" or "buttons") as the HUD's legend, in the
+// words of the world's kind (world_kind's choice).
+SessionOptions session_options(const Options& o, const world::Scene& scene, const std::string& legend,
+                               kinds::KindChoice kind);
 
 }  // namespace noneuclid::app

@@ -95,12 +95,12 @@ nw_status make_world(const char* function, world::Scene& scene, world::EngineKin
     std::string why;
     if (!world::within_budget(scene, why) || !world::within_ranges(scene, why))
         return fail(NW_ERR_SCENE, std::string(function) + ": the scene: " + why + ".");
-    kinds::KindChoice kind;
-    kinds::choose_kind(scene, nullptr, kind, why);  // (its kind first: NULL names the interface's default engine)
+    kinds::KindChoice kind;  // (its kind is chosen whether or not it has the engine)
+    const bool has_engine = kinds::choose_kind(scene, &engine, kind, why);
     if (!kinds::kind_can(kind.kind).c_interface)  // (the uneven world: not in this interface's version yet)
         return fail(NW_ERR_SCENE, std::string(function) + ": the scene has bumps, " + kinds::kind_help(kind.kind) +
                                       ", which this interface does not run yet: use a scene without [[bump]] tables.");
-    if (!kinds::choose_kind(scene, &engine, kind, why))
+    if (!has_engine)
         return fail(NW_ERR_SCENE, std::string(function) + ": " + why + ".");
     auto w = std::make_unique<nw_world>();
     w->world = capi::make_world_handle(kind, scene);

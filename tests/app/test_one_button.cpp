@@ -45,7 +45,7 @@ OneButtonRun one_button_run(const std::string& scene_name, long frames, const st
         std::string error;
         EXPECT_TRUE(platform::hud_font("builtin", font, error));
         app::record_settings(rec, o, "scripted", font, render::PixelFormat::xrgb8888());
-        const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "buttons"), font.font, &rec);
+        const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "buttons", app::world_kind(o, scene)), font.font, &rec);
         std::size_t next = 0;
         for (long i = 0; i < frames; ++i) {
             while (next < fire.size() && fire[next].first == i) s->queue({Action::fire, fire[next++].second});
@@ -75,7 +75,7 @@ std::string replayed_dump(const OneButtonRun& run, long frames) {
     const app::Options d = app::layered_options(3, argv, 1, app::Command::dump, script);
     EXPECT_FALSE(d.one_button);
     const world::Scene scene = app::load_scene(d);
-    const auto s = app::make_session(app::world_kind(d, scene), scene, app::session_options(d, scene, "buttons"), render::builtin_font(), nullptr);
+    const auto s = app::make_session(app::world_kind(d, scene), scene, app::session_options(d, scene, "buttons", app::world_kind(d, scene)), render::builtin_font(), nullptr);
     app::ScriptPlayer player(script.events);
     s->play_due(player);
     for (long i = 0; i < frames; ++i) {

@@ -181,7 +181,7 @@ LiveRun run_live(app::Options o, const std::vector<Key>& keys, render::PixelForm
     ScriptedDisplay display(320, 200, format, keys, resize_at);
     o.legend = display.legend();
     app::record_settings(rec, o, "scripted", font, format);
-    const auto session = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, o.legend), font.font, &rec);
+    const auto session = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, o.legend, app::world_kind(o, scene)), font.font, &rec);
     app::LoopOptions lo;
     lo.frames = o.frames;
     app::FrameLoop loop(display, *session, nullptr, &rec, lo);
@@ -307,7 +307,7 @@ TEST(Recording, AWholeGameReplaysPixelExact) {
     app::Script script;
     const app::Options d = app::layered_options(3, argv, 1, app::Command::dump, script);
     const world::Scene scene = app::load_scene(d);
-    const auto s = app::make_session(app::world_kind(d, scene), scene, app::session_options(d, scene, "keys"), render::builtin_font(), nullptr);
+    const auto s = app::make_session(app::world_kind(d, scene), scene, app::session_options(d, scene, "keys", app::world_kind(d, scene)), render::builtin_font(), nullptr);
     app::ScriptPlayer player(script.events);
     std::string all, line;
     s->play_due(player);
@@ -348,7 +348,7 @@ TEST(Session, ATapMarksTheLiveInstrumentWhereThePixelShows) {
         std::FILE* file = std::fopen(path.c_str(), "w");
         ASSERT_NE(file, nullptr);
         app::Recorder rec(file);
-        const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys"), render::builtin_font(), &rec);
+        const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys", app::world_kind(o, scene)), render::builtin_font(), &rec);
         // Three points, and the pixels that show them (by the projection's own formula).
         const geo::Polar<double> want[3] = {{0.8, 0.3}, {1.1, 2.2}, {0.5, -2.0}};
         for (const geo::Polar<double>& w : want) {
@@ -401,7 +401,7 @@ TEST(Session, TheButtonsLegendNamesFireOnlyWhereItActsInTheRunsLanguage) {
         o.scene = c.scene, o.language = c.lang;
         world::Scene scene;
         ASSERT_TRUE(world::builtin_scene(c.scene, o.params, scene)) << c.scene;
-        const app::SessionOptions so = app::session_options(o, scene, "buttons");
+        const app::SessionOptions so = app::session_options(o, scene, "buttons", app::world_kind(o, scene));
         EXPECT_NE(so.legend.find(c.has), std::string::npos) << c.scene << " " << c.lang << ": " << so.legend;
         EXPECT_EQ(so.legend.find(c.lacks), std::string::npos) << c.scene << " " << c.lang << ": " << so.legend;
     }
@@ -410,7 +410,7 @@ TEST(Session, TheButtonsLegendNamesFireOnlyWhereItActsInTheRunsLanguage) {
 TEST(Session, KeysSetKAndQuitStops) {
     app::Options o = app::defaults(app::Command::run);
     const world::Scene scene = app::load_scene(o);
-    const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys"), render::builtin_font(),
+    const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys", app::world_kind(o, scene)), render::builtin_font(),
                                      nullptr);
     ASSERT_NE(s->curvature(), 1.0);
     for (auto [c, K] : {std::pair{Action::spherical, 1.0}, {Action::hyperbolic, -1.0}, {Action::flat, 0.0}}) {

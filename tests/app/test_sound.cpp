@@ -195,7 +195,7 @@ TEST(Sound, TheSessionCuesFireAndHitInTheStepsTheGameDoesThem) {
     o.scene = std::string(NONEUCLID_SOURCE_DIR) + "/tests/files/data/game.toml";
     o.engine = world::engine_named("double");
     const world::Scene scene = app::load_scene(o);
-    const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys"), render::builtin_font(), nullptr);
+    const auto s = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys", app::world_kind(o, scene)), render::builtin_font(), nullptr);
     int fires = 0, hits = 0, thrusts = 0;
     long bullet = 0;
     std::string line;

@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
         const world::Scene scene = app::load_scene(o);
         const platform::LoadedFont font = app::load_font(o);
         app::MemoryDisplay display(o.width, o.height, o.format);
-        const auto session = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys"), font.font, nullptr);
+        const auto session = app::make_session(app::world_kind(o, scene), scene, app::session_options(o, scene, "keys", app::world_kind(o, scene)), font.font, nullptr);
         app::LoopOptions lo;
         app::FrameLoop loop(display, *session, nullptr, nullptr, lo);
         double best = 1e300;

@@ -96,7 +96,7 @@ void run(const Case& c) {
     o.projection = o.aa ? geo::Projection::stereographic : geo::Projection::azimuthal_equidistant;
     o.format = o.aa ? render::PixelFormat::xrgb8888() : render::PixelFormat::rgb565();
     const world::Scene scene = app::load_scene(o);
-    const app::SessionOptions so = app::session_options(o, scene, "buttons");
+    const app::SessionOptions so = app::session_options(o, scene, "buttons", app::world_kind(o, scene));
     const std::unique_ptr<app::Session> s =
         app::make_session(app::world_kind(o, scene), scene, so, render::builtin_font(), nullptr);
 
