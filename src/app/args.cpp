@@ -10,10 +10,22 @@ namespace noneuclid::app {
 
 void usage_error(const std::string& message) { throw UsageError{message}; }
 
+Args::Args(std::vector<std::string> words) {
+    for (std::string& w : words) {
+        const std::size_t eq = w.find('=');
+        if (w.size() > 2 && w.compare(0, 2, "--") == 0 && eq != std::string::npos && eq > 2) {
+            words_.push_back(w.substr(0, eq)), attached_.push_back(false);
+            words_.push_back(w.substr(eq + 1)), attached_.push_back(true);
+        } else {
+            words_.push_back(std::move(w)), attached_.push_back(false);
+        }
+    }
+}
+
 const std::string& Args::value(const std::string& opt) {
-    if (!more()) usage_error(opt + " needs a value; see 'noneuclid --help'.");
+    if (!more()) usage_error(opt + " needs a value; " + help_hint() + ".");
     const std::string& v = next();
-    if (v.empty()) usage_error(opt + " needs a value, not an empty word; see 'noneuclid --help'.");
+    if (v.empty()) usage_error(opt + " needs a value, not an empty word; " + help_hint() + ".");
     return v;
 }
 

@@ -17,11 +17,17 @@ struct UsageError {
 
 class Args {
 public:
-    Args(int argc, char** argv, int first) : words_(argv + first, argv + argc) {}
-    explicit Args(std::vector<std::string> words) : words_(std::move(words)) {}
+    // "--option=value" is read as "--option value" (a word that starts with "--" and holds "=").
+    Args(int argc, char** argv, int first) : Args(std::vector<std::string>(argv + first, argv + argc)) {}
+    explicit Args(std::vector<std::string> words);
 
     bool more() const { return at_ < words_.size(); }
     const std::string& next() { return words_[at_++]; }
+    // Whether the word next() gave last was written after an "=" ("--option=value").
+    bool last_attached() const { return at_ > 0 && attached_[at_ - 1]; }
+    // The command whose --help an error points to ("render": "see 'noneuclid render --help'").
+    void set_command(std::string name) { command_ = std::move(name); }
+    std::string help_hint() const { return "see 'noneuclid " + (command_.empty() ? "" : command_ + " ") + "--help'"; }
     // The value after option `opt`.
     const std::string& value(const std::string& opt);
     // The value as a number in [lo, hi], a whole number in [lo, hi], WIDTHxHEIGHT.
@@ -34,7 +40,9 @@ public:
 
 private:
     std::vector<std::string> words_;
+    std::vector<bool> attached_;  // words_[i] came after an "="
     std::size_t at_ = 0;
+    std::string command_;
 };
 
 // Values that several commands take; each throws a UsageError naming `opt`.

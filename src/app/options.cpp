@@ -324,8 +324,14 @@ bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
 }
 
 void parse_options(Args& a, Options& o, Command c) {
+    a.set_command(command_name(c));
+    std::string previous;  // the option read last
     while (a.more()) {
         const std::string opt = a.next();
+        if (a.last_attached())  // "--hud=on": a value given to an option that takes none
+            usage_error("'" + previous + "' takes no value: write '" + previous + "' alone, not '" + previous + "=" + opt +
+                        "'; see 'noneuclid " + command_name(c) + " --help'.");
+        previous = opt;
         if (parse_option(a, opt, o, c)) continue;
         const OptionRow* row = find_option(opt);
         std::vector<std::string> others;
