@@ -76,7 +76,7 @@ int lesson_command(int argc, char** argv, int first) {
     if (!base.record.empty()) usage_error("--record keeps one scene's run: a lesson's steps are not recorded (record a step with run --scene).");
     if (!worksheet.empty()) {
         std::string error;
-        if (!platform::output_allowed(worksheet, error)) usage_error("--worksheet: " + error);
+        check_output("--worksheet", worksheet, ".png", "a PNG (a PDF is not written yet)");
         if (!write_worksheet(lesson, base, worksheet, error)) {
             std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
             return 1;

@@ -61,10 +61,10 @@ void set_up_run(int argc, char** argv, int first, RunSetup& r) {
     if (r.shown->kind == platform::DisplayKind::png) {
         if (o.frames == 0) o.frames = 600;  // ten seconds of world time: nobody is there to close it
         if (!o.attract_given) o.attract = 1;  // nor at the keys: the autopilot flies
-        if (o.screenshot.empty()) o.screenshot = "out/run.png";
-        std::error_code ec;
-        const std::filesystem::path dir = std::filesystem::path(o.screenshot).parent_path();
-        if (!dir.empty()) std::filesystem::create_directories(dir, ec);
+        if (o.screenshot.empty()) {
+            o.screenshot = "out/run.png";
+            check_output("--screenshot", o.screenshot, ".png", "a PNG");
+        }
     }
     r.size_given = given.size_given;
 }

@@ -113,12 +113,41 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play
     return table;
 }
 
-void check_outputs(const Options& o) {
-    const std::pair<const char*, const std::string*> outputs[] = {
-        {"--out", &o.out}, {"--gif", &o.gif}, {"--record", &o.record}, {"--screenshot", &o.screenshot}};
+void check_output(const char* option, const std::string& path, const char* extension, const char* what) {
     std::string error;
-    for (const auto& [option, path] : outputs)
-        if (!path->empty() && !platform::output_allowed(*path, error)) usage_error(std::string(option) + ": " + error);
+    if (!platform::output_allowed(path, error)) usage_error(std::string(option) + ": " + error);
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    const bool stream = fs::exists(st) && !fs::is_regular_file(st);  // a FIFO, standard output: no name to check
+    if (extension && !stream) {
+        std::string ext = fs::path(path).extension().string();
+        for (char& ch : ext) ch = static_cast<char>(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+        if (ext != extension)
+            usage_error(std::string(option) + " writes " + what + ": name it " + extension + ", not '" +
+                        world::printable(path) + "'.");
+    }
+    const fs::path dir = fs::path(path).parent_path();
+    if (stream || dir.empty() || fs::is_directory(dir, ec)) return;
+    fs::create_directories(dir, ec);
+    if (ec || !fs::is_directory(dir))
+        usage_error(std::string(option) + ": cannot make the folder '" + world::printable(dir.string()) + "' (" +
+                    ec.message() + "): name a folder that can be made or exists.");
+}
+
+void check_outputs(const Options& o) {
+    struct Output {
+        const char* option;
+        const std::string* path;
+        const char* extension;  // null: any name
+        const char* what;
+    };
+    const Output outputs[] = {{"--out", &o.out, ".png", "a PNG"},
+                              {"--gif", &o.gif, ".gif", "an animated GIF"},
+                              {"--record", &o.record, nullptr, "a recording"},
+                              {"--screenshot", &o.screenshot, ".png", "a PNG"}};
+    for (const Output& out : outputs)
+        if (!out.path->empty()) check_output(out.option, *out.path, out.extension, out.what);
 }
 
 lang::Language resolve_language(const Options& o) {

@@ -42,6 +42,11 @@ std::unique_ptr<HighScoreTable> open_scores(const std::string& choice, bool play
 // (platform::output_allowed: a directory, a device, a symbolic link): --out, --gif, --record
 // and --screenshot.
 void check_outputs(const Options& o);
+// The one rule for a file a command writes (docs/reliability.md, "Outputs"): allowed there
+// (app/platform.hpp's output_allowed), named with `extension` (".png"; null: any) unless it is a
+// stream (a FIFO, standard output), and its missing folders made. A UsageError naming `option`
+// and the fix otherwise.
+void check_output(const char* option, const std::string& path, const char* extension, const char* what);
 // The language o asks for: --lang (or a board's, a recording's), else the locale's
 // (platform::locale_name), else English.
 lang::Language resolve_language(const Options& o);

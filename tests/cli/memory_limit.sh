@@ -22,7 +22,7 @@ failures=0
 fail() { echo "FAIL $*" >&2; failures=$((failures + 1)); }
 pass() { echo "PASS $*"; }
 # refused NAME COMMAND...: exit 2, a last line saying out of memory and the fix (run says which
-# display it chose first), nothing new in the directory, keep.png as it was.
+# display it chose first), nothing new in the directory, keep.png and keep.gif as they were.
 refused() {
     local name=$1 rc=0
     shift
@@ -34,19 +34,21 @@ refused() {
     fi
     local f left=""
     for f in * .[!.]*; do
-        case $f in out.txt | err.txt | keep.png | keep.png.good | '*' | '.[!.]*') ;; *) left="$left $f" ;; esac
+        case $f in out.txt | err.txt | keep.png | keep.png.good | keep.gif | keep.gif.good | '*' | '.[!.]*') ;; *) left="$left $f" ;; esac
     done
     if [ -n "$left" ]; then fail "$name: left behind:$left"; return; fi
     if ! cmp -s keep.png keep.png.good; then fail "$name: keep.png was changed"; return; fi
+    if ! cmp -s keep.gif keep.gif.good; then fail "$name: keep.gif was changed"; return; fi
     pass "$name"
 }
 limited "$noneuclid" render --frames 2 --size 320x200 --out keep.png > /dev/null 2>&1 || fail "an ordinary render under the limit"
 cp keep.png keep.png.good
+echo "an earlier file" > keep.gif && cp keep.gif keep.gif.good
 refused "render --size 16384x16384" "$noneuclid" render --frames 1 --size 16384x16384 --out big.png
 refused "render over an existing file" "$noneuclid" render --frames 1 --size 16384x16384 --out keep.png
 # The GIF's buffers fit and its temporary file is open when the canvas does not: it goes too.
 refused "render --gif at 10000x10000" "$noneuclid" render --frames 2 --size 10000x10000 --gif big.gif
-refused "render --gif over an existing file" "$noneuclid" render --frames 2 --size 10000x10000 --gif keep.png
+refused "render --gif over an existing file" "$noneuclid" render --frames 2 --size 10000x10000 --gif keep.gif
 refused "render --gif at 16384x16384" "$noneuclid" render --frames 2 --size 16384x16384 --gif big.gif
 refused "run --display png at 16384x16384" "$noneuclid" run --display png --frames 1 --size 16384x16384 --screenshot shot.png
 # Under 30 MiB the threads' stacks may not fit: then the sentence and exit 2, never a signal.

@@ -69,9 +69,12 @@ intact "recording over the file-size limit" rec.txt
 expect "render --gif over the file-size limit" 1 "cannot write anim.gif: File too large" \
     prlimit --fsize=3000 "$noneuclid" render --scene fig1 --frames 120 --gif anim.gif
 intact "render --gif over the file-size limit" anim.gif
-expect "render --gif into a missing directory" 1 "cannot write missing/anim.gif: No such file or directory" \
-    "$noneuclid" render --scene fig1 --frames 4 --gif missing/anim.gif
-if [ ! -e missing ]; then pass "render --gif into a missing directory: nothing made"; else fail "render --gif made missing/"; fi
+# A missing folder is made (app/setup.hpp, check_output); one that cannot be made is one sentence.
+expect "render --gif into a folder that cannot be made" 2 "--gif: cannot make the folder 'anim.gif/deeper'" \
+    "$noneuclid" render --scene fig1 --frames 4 --gif anim.gif/deeper/anim.gif
+intact "render --gif into a folder that cannot be made" anim.gif
+"$noneuclid" render --scene fig1 --frames 4 --size 160x120 --gif made/deeper/anim.gif 2>/dev/null
+if [ -s made/deeper/anim.gif ]; then pass "render --gif into a missing folder: made"; else fail "render --gif made/deeper/anim.gif: not written"; fi
 
 mkdir -p demo && "$noneuclid" demo --out-dir demo > /dev/null 2>&1
 cp demo/kiosk.png kiosk.png.good

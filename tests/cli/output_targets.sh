@@ -118,7 +118,8 @@ done
 # A replaced file keeps its permissions.
 for option in --out --gif --record --screenshot; do
     for mode in 600 640; do
-        name=kept${option#--}$mode
+        case $option in --gif) ext=gif ;; --record) ext=rec ;; *) ext=png ;; esac  # (the name each writes)
+        name=kept${option#--}$mode.$ext
         echo "an earlier file" > "$name" && chmod "$mode" "$name"
         command_for "$option" "$name"
         "${cmd[@]}" > /dev/null 2> err.txt
