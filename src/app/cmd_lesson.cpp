@@ -48,7 +48,9 @@ int lesson_command(int argc, char** argv, int first) {
     bool print = false;
     std::vector<char*> rest = {argv[0]};
     for (int i = first + 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--worksheet") == 0) {
+        if (std::strncmp(argv[i], "--worksheet=", 12) == 0) {  // (--option=value, as app/args.hpp reads it)
+            worksheet = argv[i] + 12;
+        } else if (std::strcmp(argv[i], "--worksheet") == 0) {
             if (i + 1 >= argc) usage_error("--worksheet needs a file name: --worksheet lesson.png.");
             worksheet = argv[++i];
         } else if (std::strcmp(argv[i], "--print") == 0) {

@@ -63,6 +63,7 @@ void print_command_help(Command c) {
     std::string out = std::string("Usage: noneuclid ") + row.name + " " + row.usage + "\n\n" + wrapped(row.summary, 0) + ".\n";
     const std::vector<OptionHelp> options = options_help(c);
     out += options.empty() ? "\nIt takes no options.\n" : "\noptions:\n";
+    const bool runs = c == Command::lesson;  // (and after them, run's: the display, --lang, --size, ...)
     auto column = [](std::string head, std::size_t width) {
         head.resize(std::max(head.size() + 1, width), ' ');
         return head;
@@ -75,6 +76,7 @@ void print_command_help(Command c) {
             out += name + wrapped(ch.help, name.size()) + "\n";
         }
     }
+    if (runs) out += "\n" + wrapped("and, for the lesson played, run's options ('noneuclid run --help'): the display, --lang, --size and the rest.", 0) + "\n";
     std::fputs(out.c_str(), stdout);
 }
 

@@ -18,7 +18,8 @@ namespace {
 constexpr unsigned bit(Command c) { return 1u << static_cast<unsigned>(c); }
 constexpr unsigned kRun = bit(Command::run), kRender = bit(Command::render), kDump = bit(Command::dump),
                    kDemo = bit(Command::demo), kAccuracy = bit(Command::accuracy), kButtons = bit(Command::buttons),
-                   kScores = bit(Command::scores), kMeasure = bit(Command::measure);
+                   kScores = bit(Command::scores), kMeasure = bit(Command::measure),
+                   kLesson = bit(Command::lesson);
 constexpr unsigned kWorld = kDump | kRender | kRun, kPicture = kRender | kRun;
 
 using Choice = OptionHelp::Choice;
@@ -111,13 +112,17 @@ struct OptionRow {
     void (*read)(Args& a, const std::string& opt, Options& o, Command c);
 };
 
+void read_curvature(Args& a, const std::string& opt, Options& o, Command) {
+    o.has_curvature = true, o.curvature = a.number(opt, -1, 1);
+}
+
 // The options, in the order --help lists them. (A reader's value checks are its sentences.)
 const OptionRow kOptions[] = {
     {"--scene", "NAME|FILE", kWorld,
      "a built-in scene ('noneuclid scenes' lists them) or a TOML scene file (default kiosk; the kiosk: the board's)",
      nullptr, [](Args& a, const std::string& opt, Options& o, Command) { o.scene = a.value(opt); }},
-    {"--curvature", "K", kWorld | kMeasure, "the curvature, -1 <= K <= 1: the world starts at it instead of the scene's (measure: measures at it, default 0)", nullptr,
-     [](Args& a, const std::string& opt, Options& o, Command) { o.has_curvature = true, o.curvature = a.number(opt, -1, 1); }},
+    {"--curvature", "K", kWorld, "the curvature, -1 <= K <= 1: the world starts at it instead of the scene's", nullptr, read_curvature},
+    {"--curvature", "K", kMeasure, "the curvature it measures at, -1 <= K <= 1 (default 0)", nullptr, read_curvature},
     {"--engine", "E", kWorld | kDemo, "the engine:", engine_choices,
      [](Args& a, const std::string& opt, Options& o, Command) { o.engine = engine_value(opt, a.value(opt)); }},
     {"--projection", "P", kWorld, "the view (P cycles them live):", projection_choices,
@@ -141,19 +146,17 @@ const OptionRow kOptions[] = {
      [](Args& a, const std::string& opt, Options& o, Command) { o.params.tessellation = static_cast<int>(a.count(opt, 1, 256)); }},
     // (One option, two meanings: a place on the Earth for the earth scene, a point of the world
     // for measure's circle.)
-    {"--centre", "LAT,LON|r,deg", kWorld | kMeasure,
-     "the earth scene's centre, the place at O: LAT,LON in degrees (default 51.5,0: Greenwich); measure circle: "
-     "its centre r,deg (default 0,0, the origin)",
-     nullptr, [](Args& a, const std::string& opt, Options& o, Command c) {
+    {"--centre", "LAT,LON", kWorld, "the earth scene's centre, the place at O: LAT,LON in degrees (default 51.5,0: Greenwich)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
          const std::string v = a.value(opt);
-         if (c == Command::measure) {
-             const std::vector<geo::Polar<double>> p = parse_points(opt, v);
-             if (p.size() != 1) usage_error(opt + " needs one point r,deg (e.g. 0.5,30).");
-             o.measure.centre = p[0];
-             return;
-         }
          if (!world::parse_centre(v, o.params.centre_lat, o.params.centre_lon))
              usage_error(opt + " must be a latitude and a longitude in degrees, LAT,LON with -90 <= LAT <= 90 and -180 <= LON <= 180 (e.g. 51.5,0), not '" + v + "'.");
+     }},
+    {"--centre", "r,deg", kMeasure, "measure circle: its centre, a distance from O and an angle in degrees (default 0,0, O)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
+         const std::vector<geo::Polar<double>> p = parse_points(opt, a.value(opt));
+         if (p.size() != 1) usage_error(opt + " needs one point r,deg (e.g. 0.5,30).");
+         o.measure.centre = p[0];
      }},
     {"--view", "KM", kWorld,
      "the earth scene zoomed by curvature: KM km from the centre to the screen's edge, at K = (KM / (pi 6371))^2 "
@@ -291,14 +294,25 @@ const OptionRow kOptions[] = {
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.side = a.number(opt, -1e6, 1e6); }},
     {"--limit", "R", kMeasure, "the limit circle's radius: marks must lie within it (default pi)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.limit = a.number(opt, 1e-3, 1e4); }},
+    // (The lesson's own two, after its name; app/cmd_lesson.cpp reads them and hands the rest to run.)
+    {"--worksheet", "FILE.png", kLesson, "its printable page, a PNG: each step's picture and question", nullptr,
+     [](Args& a, const std::string& opt, Options&, Command) { a.value(opt); }},
+    {"--print", "", kLesson, "a built-in lesson's file on standard output, to change and play as FILE", nullptr,
+     [](Args&, const std::string&, Options&, Command) {}},
     {"--timeout", "SECONDS", kButtons, "stop after this long (default: never)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.timeout = a.number(opt, 0.001, 1e7); }},
 };
 
-const OptionRow* find_option(const std::string& name) {
-    for (const OptionRow& r : kOptions)
-        if (name == r.name) return &r;
-    return nullptr;
+// The row of option `name` for command c (an option may have a row for each command that reads
+// it its own way), else its first row, else null.
+const OptionRow* find_option(const std::string& name, Command c) {
+    const OptionRow* first = nullptr;
+    for (const OptionRow& r : kOptions) {
+        if (name != r.name) continue;
+        if (r.commands & bit(c)) return &r;
+        if (!first) first = &r;
+    }
+    return first;
 }
 
 }  // namespace
@@ -317,7 +331,7 @@ Options defaults(Command c) {
 }
 
 bool parse_option(Args& a, const std::string& opt, Options& o, Command c) {
-    const OptionRow* row = find_option(opt);
+    const OptionRow* row = find_option(opt, c);
     if (!row || !(row->commands & bit(c))) return false;
     row->read(a, opt, o, c);
     return true;
@@ -333,10 +347,12 @@ void parse_options(Args& a, Options& o, Command c) {
                         "'; see 'noneuclid " + command_name(c) + " --help'.");
         previous = opt;
         if (parse_option(a, opt, o, c)) continue;
-        const OptionRow* row = find_option(opt);
+        unsigned commands = 0;  // every command that has the option
+        for (const OptionRow& r : kOptions)
+            if (opt == r.name) commands |= r.commands;
         std::vector<std::string> others;
-        for (int i = 0; row && i < kCommandCount; ++i)
-            if (row->commands & (1u << i)) others.push_back(command_name(static_cast<Command>(i)));
+        for (int i = 0; i < kCommandCount; ++i)
+            if (commands & (1u << i)) others.push_back(command_name(static_cast<Command>(i)));
         if (!others.empty())
             usage_error("'" + opt + "' is not an option of " + command_name(c) + " but of " + world::or_list(others) +
                         "; see 'noneuclid " + command_name(c) + " --help'.");
