@@ -22,7 +22,8 @@ int demo_command(int argc, char** argv, int first) {
     if (ec) usage_error("cannot create the directory '" + dir + "': " + ec.message() + ".");
     const platform::LoadedFont font = load_font(defaults(Command::render));
     platform::catch_stop_signals();  // a signal leaves the picture being made as it was
-    std::string written;
+    std::string written;  // the pictures' names
+    int count = 0;
     for (int i = 0; i < kFigureCount; ++i) {
         const Figure& f = kFigures[i];
         Options o = defaults(Command::render);
@@ -40,10 +41,12 @@ int demo_command(int argc, char** argv, int first) {
             std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
             return 1;
         }
-        written += std::string(written.empty() ? "" : ", ") + f.name + ".png (" + f.what + ")";
+        written += std::string(written.empty() ? "" : " ") + f.name + ".png";
+        ++count;
     }
-    std::printf("noneuclid: the demo is in %s/: %s. 'noneuclid --help' lists the commands.\n", dir.c_str(),
-                written.c_str());
+    // One short line: the count and the folder (what each shows: docs/design.md, the figures).
+    std::printf("noneuclid: the demo wrote %d pictures to %s/ (%s); 'noneuclid --help' lists the commands.\n", count,
+                dir.c_str(), written.c_str());
     return 0;
 }
 
