@@ -1,7 +1,8 @@
 #!/bin/bash
 # The README's lists of names against the program's tables: each `--option a|b|c` list in
 # README.md (scenes, engines, projections, pixel formats, displays) must name exactly what
-# `noneuclid render --help` / `noneuclid run --help` and `noneuclid scenes` list, in order.
+# `noneuclid render --help` / `noneuclid run --help` and `noneuclid scenes` list, in order; and
+# docs/file-formats.md's table of the built-in scenes names what `noneuclid scenes` lists.
 # Usage: readme_lists.sh NONEUCLID README.md
 set -u
 prog=$1 readme=$2
@@ -31,5 +32,9 @@ check "projections (--projection)" "$(help_names render --projection)" "$(readme
 check "pixel formats (--format)" "$(help_names render --format)" "$(readme_names --format)"
 check "displays (--display)" "$(help_names run --display)" "$(readme_names --display)"
 check "scenes (noneuclid scenes)" "$("$prog" scenes | awk '{ print $1 }')" "$(readme_names --scene)"
+# docs/file-formats.md's table of the built-in scenes: its first column, in order.
+formats=$(dirname "$readme")/docs/file-formats.md
+check "scenes of docs/file-formats.md's table" "$("$prog" scenes | awk '{ print $1 }')" \
+    "$(awk '/^\*\*The built-in scenes:\*\*/ { on = 1; next } on && /^\| `/ { sub(/^\| `/, ""); sub(/`.*/, ""); print; next } on && /^$/ && seen { exit } on && /^\|/ { seen = 1 }' "$formats")"
 [ "$(help_names render --engine)" ] || { echo "no engines found in render --help"; fail=1; }
 exit $fail
