@@ -137,7 +137,11 @@ void read_body(const toml::table& t, int index, world::Scene& scene, Images& ima
     if ((b.filled || b.texture) && (!b.closed || b.vertices.size() < 3))
         throw Bad{t.source(), "body " + world::quote(b.name) + ": a fill or a texture needs a closed outline of 3 or more vertices"};
     std::string why;
-    if (!world::body_within_ranges(b, scene.limit_radius, why)) throw Bad{t.source(), why};
+    const char* key = nullptr;  // (the error at the key's line where the table has it)
+    if (!world::body_within_ranges(b, scene.limit_radius, why, &key)) {
+        const toml::node* n = key ? t.get(key) : nullptr;
+        throw Bad{n ? n->source() : t.source(), why};
+    }
     scene.bodies.push_back(std::move(b));
 }
 

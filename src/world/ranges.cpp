@@ -27,16 +27,21 @@ double body_reach(const SceneBody& b, double R) {
     return (body_moves(b) ? std::max(b.r, R) : b.r) + rho;
 }
 
-bool body_within_ranges(const SceneBody& b, double R, std::string& why) {
+bool body_within_ranges(const SceneBody& b, double R, std::string& why, const char** key) {
+    auto at = [&](const char* k) {
+        if (key) *key = k;
+    };
     const std::string name = "body " + quote(b.name) + ": ";
     if (b.r > R) {
         why = name + "its position r = " + number(b.r) + " is outside the limit circle (limit_radius = " + number(R)
               + "): place it at r <= " + number(R);
+        at("position");
         return false;
     }
     if (b.speed > Ranges::kSpeed) {
         why = name + "its speed " + number(b.speed) + " is over the ceiling of " + number(Ranges::kSpeed)
               + " world units per second: give a speed of at most that";
+        at("speed");
         return false;
     }
     if (!b.grid)
@@ -45,6 +50,7 @@ bool body_within_ranges(const SceneBody& b, double R, std::string& why) {
                 why = name + "a vertex at rho = " + number(v.rho) + " from its centre, over the "
                       + number(Ranges::kBodyRadius)
                       + " a body may span (80 degrees of the sphere at K = 1): make the body smaller";
+                at("vertices");
                 return false;
             }
     const double reach = body_reach(b, R);
@@ -54,6 +60,7 @@ bool body_within_ranges(const SceneBody& b, double R, std::string& why) {
               + (moves ? "limit_radius" : "its distance r")
               + " plus its largest rho), past the engines' reach of 2 pi (6.283): make the body smaller or "
               + (moves ? "limit_radius" : "r") + " lower";
+        at("vertices");
         return false;
     }
     return true;

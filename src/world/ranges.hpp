@@ -54,7 +54,8 @@ double body_reach(const SceneBody& b, double R);
 // Whether one body is within the ranges: its centre inside the limit circle, its vertices
 // within kBodyRadius of it (a grid line's excepted), its reach within kReach, its speed within
 // kSpeed; false with a sentence in `why` (no full stop) that ends with what to change.
-bool body_within_ranges(const SceneBody& b, double R, std::string& why);
+// (key, if given: the scene file's key of the value out of range, for the place an error names.)
+bool body_within_ranges(const SceneBody& b, double R, std::string& why, const char** key = nullptr);
 
 // Whether bump `index` (from 0) of an uneven world is within the ranges above, the scene's
 // limit radius and the count; false with a sentence in `why` (no full stop) that ends with what
