@@ -56,7 +56,7 @@ bool load_lesson_file(const std::string& path, Lesson& out, SceneError& error);
 
 // The built-in lessons (files/lessons.cpp): their names in order, and one by name (false if none).
 std::vector<std::string> builtin_lesson_names();
-// In `language` (files/lessons_de.cpp, lessons_fr.cpp; English for one a language lacks).
+// In `language` (lang/lessons_<code>.cpp; English for one a language lacks).
 bool builtin_lesson(const std::string& name, Lesson& out, lang::Language language = lang::Language::en);
 // A built-in lesson's file text (null if there is none by that name).
 const char* builtin_lesson_text(const std::string& name, lang::Language language = lang::Language::en);

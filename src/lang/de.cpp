@@ -3,7 +3,7 @@
 
 namespace noneuclid::lang {
 
-extern const Entry kGerman[] = {
+extern const Entry kTexts_de[] = {
     {Text::spherical, "sphärisch"},
     {Text::flat, "flach"},
     {Text::hyperbolic, "hyperbolisch"},
@@ -77,6 +77,6 @@ extern const Entry kGerman[] = {
     {Text::page_sound_on, "Ton: an"},
     {Text::page_sound_off, "Ton: aus"},
 };
-extern const int kGermanCount = sizeof kGerman / sizeof kGerman[0];
+extern const int kTextsCount_de = sizeof kTexts_de / sizeof kTexts_de[0];
 
 }  // namespace noneuclid::lang

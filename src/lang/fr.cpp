@@ -3,7 +3,7 @@
 
 namespace noneuclid::lang {
 
-extern const Entry kFrench[] = {
+extern const Entry kTexts_fr[] = {
     {Text::spherical, "sphérique"},
     {Text::flat, "plat"},
     {Text::hyperbolic, "hyperbolique"},
@@ -77,6 +77,6 @@ extern const Entry kFrench[] = {
     {Text::page_sound_on, "son : activé"},
     {Text::page_sound_off, "son : coupé"},
 };
-extern const int kFrenchCount = sizeof kFrench / sizeof kFrench[0];
+extern const int kTextsCount_fr = sizeof kTexts_fr / sizeof kTexts_fr[0];
 
 }  // namespace noneuclid::lang

@@ -19,7 +19,13 @@ using namespace noneuclid;
 using lang::Language;
 using lang::Text;
 
-constexpr Language kOthers[] = {Language::de, Language::fr};
+// Every language but English, from the table (lang/languages.hpp): a new row is tested here too.
+std::vector<Language> others() {
+    std::vector<Language> out;
+    for (int l = 1; l < lang::kLanguages; ++l) out.push_back(static_cast<Language>(l));
+    return out;
+}
+const std::vector<Language> kOthers = others();
 
 // The printf conversions of a format, in order ("%ld", "%.0f", ...; "%%" is none).
 std::vector<std::string> conversions(const char* s) {
@@ -106,8 +112,9 @@ TEST(Languages, EachTextKeepsTheEnglishConversionsInOrder) {
 // The HUD's texts are drawn in the built-in font where no console font is found (the page, a
 // desktop without kbd's fonts): each of their letters must be one it draws, not its '?'.
 TEST(Languages, TheBuiltInFontDrawsEveryLetterOfTheHudsTexts) {
-    for (Language l : {Language::en, Language::de, Language::fr})
+    for (int li = 0; li < lang::kLanguages; ++li)
         for (int i = 0; i < lang::kTexts; ++i) {
+            const Language l = static_cast<Language>(li);
             const Text t = static_cast<Text>(i);
             if (std::string(lang::text_name(t)).rfind("page_", 0) == 0) continue;  // the page's: the browser's fonts
             EXPECT_EQ(undrawn(lang::text(t, l)), "") << lang::language_code(l) << ": " << lang::text_name(t);
@@ -159,6 +166,21 @@ TEST(Languages, TheBuiltInLessonsAreTheEnglishOnesStepForStepTranslated) {
                 EXPECT_EQ(undrawn(b.caption + b.question), "") << at;
             }
         }
+    }
+}
+
+// The table's rows read back: codes, names, the refusal's list, and every language's lessons are
+// the English ones by name, in order (a language lacking one would fall back to the English).
+TEST(Languages, TheTablesRowsReadBack) {
+    EXPECT_STREQ(lang::language_choices(), "en, de or fr");
+    EXPECT_STREQ(lang::language_name(Language::fr), "Français");
+    EXPECT_STREQ(lang::language_code(Language::de), "de");
+    const lang::Lessons en = lang::lessons(Language::en);
+    ASSERT_GE(en.count, 3);
+    for (Language l : kOthers) {
+        const lang::Lessons o = lang::lessons(l);
+        ASSERT_EQ(o.count, en.count) << lang::language_code(l);
+        for (int i = 0; i < en.count; ++i) EXPECT_STREQ(o.lessons[i].name, en.lessons[i].name) << lang::language_code(l);
     }
 }
 

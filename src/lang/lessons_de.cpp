@@ -1,9 +1,9 @@
-// The built-in lessons in German: files/lessons.cpp's, step for step (a test holds them to it).
-#include "files/lessons_text.hpp"
+// The built-in lessons in German: lang/lessons_en.cpp's, step for step (a test holds them to it).
+#include "lang/lang.hpp"
 
-namespace noneuclid::files {
+namespace noneuclid::lang {
 
-extern const BuiltinLesson kLessonsGerman[] = {
+extern const LessonText kLessons_de[] = {
     {"curvature", R"(title = "Was Krümmung ist"
 about = "K von -1 bis +1: dasselbe Gitter auf einer Kugel, einer Ebene und einem Sattel"
 
@@ -107,6 +107,6 @@ question = "Warum kommt ein Geschoss auf einer Kugel zurück?"
 seconds = 60
 )"},
 };
-extern const int kLessonsGermanCount = sizeof kLessonsGerman / sizeof kLessonsGerman[0];
+extern const int kLessonsCount_de = sizeof kLessons_de / sizeof kLessons_de[0];
 
-}  // namespace noneuclid::files
+}  // namespace noneuclid::lang

@@ -1,9 +1,9 @@
-// The built-in lessons in French: files/lessons.cpp's, step for step (a test holds them to it).
-#include "files/lessons_text.hpp"
+// The built-in lessons in French: lang/lessons_en.cpp's, step for step (a test holds them to it).
+#include "lang/lang.hpp"
 
-namespace noneuclid::files {
+namespace noneuclid::lang {
 
-extern const BuiltinLesson kLessonsFrench[] = {
+extern const LessonText kLessons_fr[] = {
     {"curvature", R"(title = "Ce qu'est la courbure"
 about = "K de -1 à +1 : la même grille sur une sphère, un plan et une selle"
 
@@ -107,6 +107,6 @@ question = "Pourquoi un tir revient-il sur une sphère ?"
 seconds = 60
 )"},
 };
-extern const int kLessonsFrenchCount = sizeof kLessonsFrench / sizeof kLessonsFrench[0];
+extern const int kLessonsCount_fr = sizeof kLessons_fr / sizeof kLessons_fr[0];
 
-}  // namespace noneuclid::files
+}  // namespace noneuclid::lang
