@@ -11,6 +11,7 @@
 
 #include "board.hpp"
 #include "semihosting.hpp"
+#include "kinds/step.hpp"
 
 namespace noneuclid::mcu::board {
 namespace {
@@ -21,8 +22,7 @@ char g_cmdline[512];
 char g_text[8192];  // the recording's text
 const char* g_outdir = nullptr;
 long g_every = 1, g_frames = 0;
-const Recording* g_recording = nullptr;
-int g_next = 0;  // the recording's next event
+kinds::DueEvents<RecordedEvent> g_due;  // the recording's events (kinds/step.hpp)
 
 // The next word of the command line, NUL-terminated in place.
 char* word(char** at) {
@@ -69,16 +69,15 @@ bool start(Recording& setup) {
         std::snprintf(line, sizeof line, "noneuclid firmware: the recording: %s", why);
         return fail(line);
     }
-    g_recording = &setup;
+    g_due = kinds::DueEvents<RecordedEvent>(setup.events, static_cast<std::size_t>(setup.count));
     g_frames = setup.frames;
     return true;
 }
 
-// The recording's events due by world time `time`, within 1e-9 s (app/script.hpp's ScriptPlayer).
+// The recording's events due by world time `time` (kinds/step.hpp: the program's rule).
 int controls(double time, RecordedEvent* out, int room) {
     int n = 0;
-    while (n < room && g_next < g_recording->count && g_recording->events[g_next].time <= time + 1e-9)
-        out[n++] = g_recording->events[g_next++];
+    for (const RecordedEvent* e; n < room && (e = g_due.next_due(time));) out[n++] = *e;
     return n;
 }
 

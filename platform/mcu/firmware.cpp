@@ -3,9 +3,9 @@
 // that the board presents (board.hpp). The world and its drawing buffers are made once at start (the
 // heap's only use); the frames allocate nothing, which the firmware checks and reports.
 //
-// The frame order is `noneuclid render`'s (app/picture.cpp): the controls due at time 0, then
-// frame 0 drawn; each next frame one step of 1/60 s, the controls due at the new time, the
-// frame drawn. The controls act, and the HUD's game is filled, by the rules the program's
+// The frame order is the program's (kinds/step.hpp's start_run and advance_run, which the
+// session runs too): the controls due at time 0, then frame 0 drawn; each next frame one step
+// of 1/60 s, the controls due at the new time, the frame drawn. The controls act, and the HUD's game is filled, by the rules the program's
 // session uses (render/play.hpp; the session's attract mode aside), so a recording's frames
 // equal render's, pixel for pixel.
 #include <cstdio>
@@ -126,7 +126,7 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
     View o{draw_options(setup), setup.hud, {setup.best}};
     const std::size_t allocations = heap_allocations();
 
-    play_due(w, o);
+    kinds::start_run([&] { play_due(w, o); });
     for (long f = 0;; ++f) {
         for (int y0 = 0; y0 < board::kHeight; y0 += kBandRows) {  // (each band: what the whole frame has there)
             const auto canvas = render::Canvas::band(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2,
@@ -136,9 +136,12 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
             if (!board::present(g_pixels, y0, y0 + kBandRows, f)) board::finish(false, "noneuclid firmware: the display failed.");
         }
         if (f == setup.frames && !board::runs_forever()) break;
-        w.step(kDt);
-        game_events(w, o);
-        play_due(w, o);
+        kinds::advance_run(
+            [&] {
+                w.step(kDt);
+                game_events(w, o);
+            },
+            [&] { play_due(w, o); });
     }
     const std::size_t after = heap_allocations() - allocations;
     std::snprintf(why, sizeof why,

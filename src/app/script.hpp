@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "kinds/step.hpp"
 #include "world/action.hpp"
 
 namespace noneuclid::app {
@@ -60,21 +61,12 @@ const char* const* setting_keys();
 bool parse_script(const std::string& text, const std::string& file, Script& out, ScriptError& error);
 bool load_script(const std::string& path, Script& out, ScriptError& error);
 
-// The events due by a time, in order, from a script's list (which must outlive it).
-class ScriptPlayer {
+// The events due by a time, in order, from a script's list (which must outlive it and not change):
+// kinds/step.hpp's DueEvents, the firmware's player too.
+class ScriptPlayer : public kinds::DueEvents<ScriptEvent> {
 public:
     ScriptPlayer() = default;
-    explicit ScriptPlayer(const std::vector<ScriptEvent>& events) : events_(&events) {}
-    // The next event if it is due at world time `time` (within 1e-9 s: the times are printed to
-    // 9 decimals), else null.
-    const ScriptEvent* next_due(double time) {
-        if (!events_ || next_ >= events_->size() || (*events_)[next_].time > time + 1e-9) return nullptr;
-        return &(*events_)[next_++];
-    }
-
-private:
-    const std::vector<ScriptEvent>* events_ = nullptr;
-    std::size_t next_ = 0;
+    explicit ScriptPlayer(const std::vector<ScriptEvent>& events) : DueEvents(events.data(), events.size()) {}
 };
 
 }  // namespace noneuclid::app

@@ -76,12 +76,14 @@ public:
     void play_due(ScriptPlayer& player) {
         while (const ScriptEvent* e = player.next_due(time())) play(*e);
     }
-    // The one order of a run, for the frame loop, render and dump alike: play_due before the
-    // first step (start), then each frame one step and the events due at the new time (advance).
-    void start(ScriptPlayer& player) { play_due(player); }
+    // The one order of a run (kinds/step.hpp, the firmware's too), for the frame loop, render
+    // and dump alike: play_due before the first step (start), then each frame one step and the
+    // events due at the new time (advance).
+    void start(ScriptPlayer& player) {
+        kinds::start_run([&] { play_due(player); });
+    }
     void advance(ScriptPlayer& player) {
-        step();
-        play_due(player);
+        kinds::advance_run([&] { step(); }, [&] { play_due(player); });
     }
     // The queued input, the autopilot, one step of dt.
     virtual void step() = 0;
