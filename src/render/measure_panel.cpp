@@ -54,7 +54,8 @@ void reading(MeasurePanel& p, const char* label, double v, int decimals, const c
         if (decimals == 0 || static_cast<int>(std::strlen(value)) <= 5 + (value[0] == '-')) break;
     }
     // A value that rounds to zero has no sign ("-0.00" is a rounding error's, not a reading).
-    if (value[0] == '-' && std::strspn(value, "-0.") == std::strlen(value)) std::memmove(value, value + 1, std::strlen(value));
+    if (value[0] == '-' && std::strspn(value, "-0.") == std::strlen(value))
+        std::memmove(value, value + 1, std::strlen(value));
     const int pad = std::max(1, kValueEnd - columns(label) - static_cast<int>(std::strlen(value)));
     const char* space = *unit && std::strcmp(unit, "°") != 0 ? " " : "";
     line(p, "%s%*s%s%s%s", label, pad, "", value, space, unit);

@@ -86,14 +86,16 @@ void expect_rows(const std::string& table, const std::string& json, const std::v
             continue;
         }
         const std::size_t point = r.value.find('.');
-        EXPECT_EQ(point == std::string::npos ? 0 : int(r.value.size() - point - 1), e.decimals) << e.name << " " << r.value;
+        EXPECT_EQ(point == std::string::npos ? 0 : int(r.value.size() - point - 1), e.decimals)
+            << e.name << " " << r.value;
         EXPECT_EQ(r.value.find_first_not_of("-0123456789."), std::string::npos) << e.name << " " << r.value;
         const double v = std::strtod(r.value.c_str(), nullptr);
         if (v == 0) {
             EXPECT_NE(r.value[0], '-') << e.name << " " << r.value;
         }
         const double reference = json_number(json, e.key, e.index);
-        EXPECT_LE(std::fabs(v - reference), 0.5 * std::pow(10.0, -e.decimals) + 1e-9) << e.name << " " << r.value << " vs " << reference;
+        EXPECT_LE(std::fabs(v - reference), 0.5 * std::pow(10.0, -e.decimals) + 1e-9)
+            << e.name << " " << r.value << " vs " << reference;
     }
 }
 
@@ -162,9 +164,12 @@ TEST(MeasureTable, ParallelsRowsAreTheJsonRounded) {
 }
 
 TEST(MeasureTable, PolygonRowsAreTheJsonRounded) {
-    const std::vector<Expected> rows = {{"sides", "sides", -1, "", 0},           {"around", "around", -1, "", 0},
-                                        {"side", "side", -1, "units", 3},        {"angle", "angle", -1, kDeg, 1},
-                                        {"gap", "gap", -1, kDeg, 1},             {"closing K", "closing_K", -1, "1/units²", 3}};
+    const std::vector<Expected> rows = {{"sides", "sides", -1, "", 0},
+                                        {"around", "around", -1, "", 0},
+                                        {"side", "side", -1, "units", 3},
+                                        {"angle", "angle", -1, kDeg, 1},
+                                        {"gap", "gap", -1, kDeg, 1},
+                                        {"closing K", "closing_K", -1, "1/units²", 3}};
     const int pq[][2] = {{3, 7}, {4, 4}, {6, 3}, {5, 4}};
     for (const auto& c : pq)
         for (double K : kCurvatures) {

@@ -43,7 +43,8 @@ std::string line_of(const MeasurePanel& p, const std::string& label) {
 
 // Checks a reading's line: "<label> <number><unit>" with the number within half a unit in its
 // last place of `reference`, `decimals` places, and the line ending in `unit` exactly.
-void expect_reading(const MeasurePanel& p, const std::string& label, double reference, int decimals, const std::string& unit) {
+void expect_reading(const MeasurePanel& p, const std::string& label, double reference, int decimals,
+                    const std::string& unit) {
     const std::string l = line_of(p, label);
     SCOPED_TRACE(l);
     ASSERT_GE(l.size(), unit.size());
@@ -142,13 +143,15 @@ TEST(MeasurePanel, GermanUnitsAreLEAndFE) {
 TEST(MeasurePanel, LinesFitAndAreDrawn) {
     for (lang::Language language : {lang::Language::en, lang::Language::de, lang::Language::fr})
         for (double K : {-1.0, 0.0, 1e-3, 1.0})
-            for (const world::GaugeReading& r : {triangle_at(K), circle_at(K, K > 0.5 ? 3 : 6), parallels_at(K), polygon_at(K)}) {
+            for (const world::GaugeReading& r :
+                 {triangle_at(K), circle_at(K, K > 0.5 ? 3 : 6), parallels_at(K), polygon_at(K)}) {
                 const MeasurePanel p = render::measure_panel(r, language);
                 EXPECT_GE(p.lines, 5);
                 for (int i = 0; i < p.lines; ++i) {
                     const std::u32string l = decode(p.text[i]);
                     EXPECT_LE(l.size(), std::size_t(render::kPanelColumns)) << p.text[i];
-                    for (char32_t c : l) EXPECT_TRUE(render::builtin_font_draws(c)) << p.text[i] << " U+" << std::hex << unsigned(c);
+                    for (char32_t c : l)
+                        EXPECT_TRUE(render::builtin_font_draws(c)) << p.text[i] << " U+" << std::hex << unsigned(c);
                 }
             }
 }
