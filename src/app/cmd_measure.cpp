@@ -1,5 +1,6 @@
 // `noneuclid measure INSTRUMENT`: one instrument's readings at one curvature, as one JSON object
-// on stdout (files/measure_json.hpp; docs/measure.md explains each instrument). A construction
+// on stdout (files/measure_json.hpp; docs/measure.md explains each instrument), or with
+// --format table as rounded rows with their units (files/measure_table.hpp). A construction
 // the instrument cannot measure (a mark past the limit circle, coincident or collinear marks, a
 // polygon that closes at no K in [-1, 1], a length that is not positive) is one sentence and
 // exit status 2, like any bad input.
@@ -10,6 +11,7 @@
 #include "app/args.hpp"
 #include "app/commands.hpp"
 #include "files/measure_json.hpp"
+#include "files/measure_table.hpp"
 #include "geometry/measure.hpp"
 #include "world/quote.hpp"
 
@@ -51,32 +53,36 @@ int measure_command(int argc, char** argv, int first) {
             geo::TriangleReading t;
             e = geo::measure_triangle(K, v.data(), m.limit, t);
             if (e != geo::MeasureError::none) refuse(m.instrument, e);
-            files::append_triangle_json(out, K, v.data(), e, t);
+            if (m.table) files::append_triangle_table(out, K, t);
+            else files::append_triangle_json(out, K, v.data(), e, t);
             break;
         }
         case geo::Instrument::circle: {
             geo::CircleReading c;
             e = geo::measure_circle(K, m.centre, m.radius, m.limit, c);
             if (e != geo::MeasureError::none) refuse(m.instrument, e);
-            files::append_circle_json(out, K, m.centre, m.radius, e, c);
+            if (m.table) files::append_circle_table(out, K, c);
+            else files::append_circle_json(out, K, m.centre, m.radius, e, c);
             break;
         }
         case geo::Instrument::parallels: {
             geo::ParallelsReading p;
             e = geo::measure_parallels(K, m.distance, m.length, p);
             if (e != geo::MeasureError::none) refuse(m.instrument, e);
-            files::append_parallels_json(out, K, m.distance, m.length, e, p);
+            if (m.table) files::append_parallels_table(out, K, p);
+            else files::append_parallels_json(out, K, m.distance, m.length, e, p);
             break;
         }
         case geo::Instrument::polygon: {
             geo::PolygonReading r;
             e = geo::measure_polygon(K, m.sides, m.around, m.side, r);
             if (e != geo::MeasureError::none) refuse(m.instrument, e);
-            files::append_polygon_json(out, K, m.sides, m.around, m.side, e, r);
+            if (m.table) files::append_polygon_table(out, K, r);
+            else files::append_polygon_json(out, K, m.sides, m.around, m.side, e, r);
             break;
         }
     }
-    out += '\n';
+    if (!m.table) out += '\n';  // (a table's rows end in theirs)
     std::fputs(out.c_str(), stdout);
     return std::fflush(stdout) == 0 ? 0 : 1;
 }

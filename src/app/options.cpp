@@ -292,6 +292,12 @@ const OptionRow kOptions[] = {
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.around = static_cast<int>(a.count(opt, 3, 1000)); }},
     {"--side", "a", kMeasure, "measure polygon: the side's length (default 1.2)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.side = a.number(opt, -1e6, 1e6); }},
+    {"--format", "F", kMeasure,
+     "json (the default: one object, every reading to 17 digits) or table (one row per reading, rounded, with its "
+     "unit: degrees to 0.1, lengths in world units and areas in units squared to 0.001; docs/file-formats.md)",
+     nullptr, [](Args& a, const std::string& opt, Options& o, Command) {
+         o.measure.table = one_of(opt, a.value(opt), {"json", "table"}) == "table";
+     }},
     {"--limit", "R", kMeasure, "the limit circle's radius: marks must lie within it (default pi)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.limit = a.number(opt, 1e-3, 1e4); }},
     // (The lesson's own two, after its name; app/cmd_lesson.cpp reads them and hands the rest to run.)

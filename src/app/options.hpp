@@ -36,6 +36,7 @@ struct MeasureOptions {
     int sides = 3, around = 7;                // polygon: p and q
     double side = 1.2;                        // polygon: a
     double limit = 3.141592653589793;         // the limit circle's radius the marks must lie within
+    bool table = false;                       // --format table: rounded, with units (else JSON)
 };
 
 struct Options {

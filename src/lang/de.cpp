@@ -43,6 +43,8 @@ extern const Entry kTexts_de[] = {
     {Text::of_needed, "von %d"},
     {Text::angle_sum, "Summe"},
     {Text::closes_at, "schließt bei"},
+    {Text::unit_length, "LE"},  // Längeneinheit, as German schools write it
+    {Text::unit_area, "FE"},    // Flächeneinheit
     {Text::done_fire, "Feuer drücken, um weiterzumachen"},
     {Text::done_above, "K über %g"},
     {Text::done_below, "K unter %g"},

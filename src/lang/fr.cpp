@@ -43,6 +43,8 @@ extern const Entry kTexts_fr[] = {
     {Text::of_needed, "sur %d"},
     {Text::angle_sum, "somme"},
     {Text::closes_at, "ferme à"},
+    {Text::unit_length, "u"},   // unité (de longueur)
+    {Text::unit_area, "u²"},
     {Text::done_fire, "appuyez sur feu pour continuer"},
     {Text::done_above, "K au-dessus de %g"},
     {Text::done_below, "K au-dessous de %g"},

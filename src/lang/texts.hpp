@@ -51,6 +51,8 @@
     X(of_needed, "of %d")                                                                           \
     X(angle_sum, "sum")                                                                             \
     X(closes_at, "closes at")                                                                       \
+    X(unit_length, "u")   /* the world's unit of length (K = +1: the sphere of radius 1) */         \
+    X(unit_area, "u²")    /* its square */                                                          \
     /* lessons: what ends a step, the worksheet */                                                  \
     X(done_fire, "press fire to go on")                                                             \
     X(done_above, "K above %g")                                                                     \

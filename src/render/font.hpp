@@ -41,7 +41,7 @@ struct Font {
 // A built-in font: 6x8 cells, 5x7 glyphs with a column of spacing on the right and a row below
 // (used only by the descenders of g j p q y and the comma, and the cedilla). ASCII 32..126 and
 // the Latin-1 letters of German and French (ä ö ü ß, é è ê à ç î ô û ù ë ï and their capitals,
-// with °); the other indices below 256 hold '?'. The table is constant data (no start-up code).
+// with ° and ²); the other indices below 256 hold '?'. The table is constant data (no start-up code).
 const Font& builtin_font();
 // Whether the built-in font has a glyph of its own for c (not the '?' it shows otherwise).
 bool builtin_font_draws(char32_t c);

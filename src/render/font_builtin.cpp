@@ -128,12 +128,14 @@ constexpr Composed kComposed[] = {
 constexpr uint8_t kAccentSmall[][2] = {{0x10, 0x20}, {0x40, 0x20}, {0x20, 0x50}, {0x00, 0x50}, {0, 0}};
 constexpr uint8_t kAccentCapital[] = {0x10, 0x40, 0x20, 0x50, 0};
 
-// Drawn whole: the sharp s, the degree sign and the no-break space.
+// Drawn whole: the sharp s, the degree sign, the superscript two and the no-break space.
 constexpr ArtBlock kLatinArt[] = {
     //   ß
     {0xDF, 1, {".##..", "#..#.", "#..#.", "#.#..", "#..#.", "#...#", "#.##.", "#...."}},
     //   °
     {0xB0, 1, {".##..", "#..#.", "#..#.", ".##..", ".....", ".....", ".....", "....."}},
+    //   ² (a unit squared: u², FE)
+    {0xB2, 1, {".##..", "...#.", "..#..", ".###.", ".....", ".....", ".....", "....."}},
     //   no-break space
     {0xA0, 1, {".....", ".....", ".....", ".....", ".....", ".....", ".....", "....."}},
 };

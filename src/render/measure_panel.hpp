@@ -13,6 +13,13 @@
 
 namespace noneuclid::render {
 
+// The panel's width in characters: its longest line ("area 0.433 FE", "d(s) 0.480 LE"). At
+// twice the built-in font's 6 pixels, 156 pixels: the 160 beside the kiosk's 480-pixel disc.
+inline constexpr int kPanelColumns = 13;
+
+// The readings' lines: a label, the value (angles to 0.1°, lengths, areas and ratios to 0.001)
+// and its unit: ° for an angle, the language's abbreviation of the world's unit of length for a
+// length and of its square for an area (unit_length and unit_area in lang/texts.hpp: u, u²).
 struct MeasurePanel {
     static constexpr int kLines = 10, kWidth = 48;
     int lines = 0;
