@@ -27,8 +27,9 @@ _np_group() {
         # server driven by xdotool and read with xwininfo (x11-utils); shellcheck for the scripts;
         # PROJ's proj (proj-bin) for the earth scene's check against its projections; ccache,
         # with which run-tests compiles once what its trees compile alike; python3, which runs the
-        # library's examples' checks and its ctypes example (tests/library).
-        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ccache python3 ;;
+        # library's examples' checks and its ctypes example (tests/library); poppler-utils, whose
+        # pdfinfo and pdftoppm read the worksheets' PDFs back (tests/app/test_worksheet.cpp).
+        test) echo @build libgtest-dev libbenchmark-dev libcairo2-dev xvfb xdotool x11-utils shellcheck proj-bin ccache python3 poppler-utils ;;
         # The libFuzzer harnesses (the fuzz preset): clang 14 and libFuzzer's runtime.
         fuzz) echo @build clang-14 libclang-rt-14-dev ;;
         # The Raspberry Pi's architectures: a cross compiler with the target's libc, qemu-user

@@ -1,14 +1,18 @@
 // `noneuclid lesson`: the built-in lessons listed; `noneuclid lesson NAME|FILE` plays one on
-// run's display (app/lesson.hpp) with run's options; `--worksheet FILE.png` writes its printable
-// page instead, and `--print` the lesson's own file text (a built-in's, to copy and change).
+// run's display (app/lesson.hpp) with run's options; `--worksheet FILE` and `--answers FILE`
+// write its worksheet and the teacher's key instead (app/worksheet.hpp: PNG, or PDF when named
+// .pdf, on --paper a4 or letter), and `--print` the lesson's own file text (a built-in's, to copy
+// and change).
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/commands.hpp"
 #include "app/displays.hpp"
 #include "app/lesson.hpp"
+#include "app/worksheet.hpp"
 #include "app/setup.hpp"
 #include "world/quote.hpp"
 
@@ -43,22 +47,36 @@ int lesson_command(int argc, char** argv, int first) {
         }
         return 0;
     }
-    // --worksheet FILE and --print are the lesson's own; the rest are run's.
-    std::string worksheet;
+    // --worksheet, --answers, --paper and --print are the lesson's own; the rest are run's.
+    std::string worksheet, answers, paper_name = "a4";
     bool print = false;
     std::vector<char*> rest = {argv[0]};
+    struct Own {
+        const char* name;
+        std::string* value;
+        const char* example;
+    };
+    const Own own[] = {{"--worksheet", &worksheet, "--worksheet lesson.pdf"},
+                       {"--answers", &answers, "--answers key.pdf"},
+                       {"--paper", &paper_name, "--paper letter"}};
     for (int i = first + 1; i < argc; ++i) {
-        if (std::strncmp(argv[i], "--worksheet=", 12) == 0) {  // (--option=value, as app/args.hpp reads it)
-            worksheet = argv[i] + 12;
-        } else if (std::strcmp(argv[i], "--worksheet") == 0) {
-            if (i + 1 >= argc) usage_error("--worksheet needs a file name: --worksheet lesson.png.");
-            worksheet = argv[++i];
-        } else if (std::strcmp(argv[i], "--print") == 0) {
-            print = true;
-        } else {
-            rest.push_back(argv[i]);
+        bool taken = false;
+        for (const Own& k : own) {
+            const std::size_t n = std::strlen(k.name);
+            if (std::strncmp(argv[i], k.name, n) == 0 && argv[i][n] == '=') {  // (--option=value, as app/args.hpp reads it)
+                *k.value = argv[i] + n + 1, taken = true;
+            } else if (std::strcmp(argv[i], k.name) == 0) {
+                if (i + 1 >= argc) usage_error(std::string(k.name) + " needs a value: " + k.example + " (see noneuclid lesson --help).");
+                *k.value = argv[++i], taken = true;
+            }
         }
+        if (taken) continue;
+        if (std::strcmp(argv[i], "--print") == 0) print = true;
+        else rest.push_back(argv[i]);
     }
+    Paper paper = Paper::a4;
+    if (!parse_paper(paper_name, paper))
+        usage_error("--paper takes a4 or letter, not '" + world::printable(paper_name) + "'.");
     if (print) {
         Options o = defaults(Command::run);
         Args args(static_cast<int>(rest.size()), rest.data(), 1);
@@ -76,15 +94,27 @@ int lesson_command(int argc, char** argv, int first) {
     }
     const files::Lesson lesson = load_lesson(argv[first], resolve_language(base));
     if (!base.record.empty()) usage_error("--record keeps one scene's run: a lesson's steps are not recorded (record a step with run --scene).");
-    if (!worksheet.empty()) {
-        std::string error;
-        check_output("--worksheet", worksheet, ".png", "a PNG (a PDF is not written yet)");
-        if (!write_worksheet(lesson, base, worksheet, error)) {
-            std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
-            return 1;
+    if (!worksheet.empty() || !answers.empty()) {
+        // A .pdf is a PDF; any other name must end .png.
+        const auto is_pdf = [](const std::string& p) {
+            std::string ext = std::filesystem::path(p).extension().string();
+            for (char& ch : ext) ch = static_cast<char>(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+            return ext == ".pdf";
+        };
+        for (const Own& k : {own[0], own[1]})
+            if (!k.value->empty())
+                check_output(k.name, *k.value, is_pdf(*k.value) ? ".pdf" : ".png", "a PNG, or a PDF when named .pdf");
+        for (const Own& k : {own[0], own[1]}) {
+            if (k.value->empty()) continue;
+            std::string error;
+            const bool key = k.value == &answers;
+            if (!write_worksheet(lesson, base, *k.value, key, paper, error)) {
+                std::fprintf(stderr, "noneuclid: %s\n", error.c_str());
+                return 1;
+            }
+            std::fprintf(stderr, "noneuclid: wrote %s (the %s of '%s', %zu steps).\n", k.value->c_str(),
+                         key ? "key" : "worksheet", lesson.title.c_str(), lesson.steps.size());
         }
-        std::fprintf(stderr, "noneuclid: wrote %s (the worksheet of '%s', %zu steps).\n", worksheet.c_str(),
-                     lesson.title.c_str(), lesson.steps.size());
         return 0;
     }
     // Played on run's display: the same choice and the same options as `noneuclid run`.

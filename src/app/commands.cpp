@@ -27,8 +27,8 @@ const CommandRow kCommands[kCommandCount] = {
      "triangle|circle|parallels|polygon [OPTIONS]", measure_command},
     {Command::lesson, "lesson",
      "the lessons listed; a lesson (built-in or a file) played step by step on run's display with run's options, "
-     "or --worksheet FILE.png: its printable page; --print: a built-in lesson's file",
-     "[NAME|FILE [--worksheet FILE.png | --print] [run's OPTIONS]]", lesson_command},
+     "or --worksheet FILE and --answers FILE: its worksheet and the key (PNG or PDF); --print: a built-in lesson's file",
+     "[NAME|FILE [--worksheet FILE] [--answers FILE] [--paper a4|letter] | --print] [run's OPTIONS]]", lesson_command},
 };
 
 const char* command_name(Command c) { return kCommands[static_cast<int>(c)].name; }

@@ -5,11 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "app/picture.hpp"
-#include "app/platform.hpp"
 #include "app/setup.hpp"
-#include "render/font.hpp"
-#include "render/hud.hpp"
 #include "world/quote.hpp"
 
 namespace noneuclid::app {
@@ -20,8 +16,8 @@ namespace {
 // run's own default for that display, ten seconds.
 constexpr long kUnwatchedFrames = 600;
 
-// The options of step `i`: the base's, then every earlier step's scene and projection carried
-// on, then this step's.
+}  // namespace
+
 Options step_options(const files::Lesson& lesson, const Options& base, int i) {
     Options o = base;
     if (o.scene.empty()) o.scene = "kiosk";
@@ -35,8 +31,6 @@ Options step_options(const files::Lesson& lesson, const Options& base, int i) {
     if (s.has_curvature) o.curvature = s.curvature;
     return o;
 }
-
-}  // namespace
 
 LessonPlayer::LessonPlayer(const files::Lesson& lesson, const Options& base, Display& display, const char* name)
     : lesson_(lesson), base_(base), display_(display), display_name_(name) {
@@ -132,63 +126,6 @@ bool AttractLessonRun::tick() {
     if (!run_.loop->tick()) return status_ = run_.loop->finish(), false;
     if (run_.session->attract()) player_ = std::make_unique<LessonPlayer>(lesson_, lesson_o_, display_, name_);
     return true;
-}
-
-namespace {
-
-// Text at (x, y) wrapped to `width` pixels at word boundaries; returns the y below it.
-int paragraph(const render::Canvas& c, const render::Font& font, int x, int y, int width, const std::string& text,
-              render::Rgb color, int scale) {
-    const int line = (font.height + 3) * scale;
-    return y + line * render::draw_wrapped(c, font, text.c_str(), " ", color, scale, x, width, line, y, true);
-}
-
-}  // namespace
-
-bool write_worksheet(const files::Lesson& lesson, const Options& base, const std::string& path, std::string& error) {
-    constexpr int kWidth = 1240, kMargin = 60, kPanelW = 480, kPanelH = 288, kRow = 340, kTop = 190;
-    const render::Font& font = render::builtin_font();
-    const render::PixelFormat fmt = render::PixelFormat::xrgb8888();
-    const int height = kTop + kRow * static_cast<int>(lesson.steps.size()) + kMargin;
-    std::vector<uint8_t> pixels(static_cast<std::size_t>(kWidth) * height * 4, 0xFF);  // white paper
-    const render::Canvas page(pixels.data(), kWidth, height, std::ptrdiff_t{kWidth} * 4, fmt);
-    const render::Rgb ink{20, 20, 20}, grey{90, 90, 90};
-    using lang::Text;
-    const lang::Language language = resolve_language(base);
-    render::draw_text(page, font, kMargin, kMargin, lesson.title, ink, 4);
-    paragraph(page, font, kMargin, kMargin + 50, kWidth - 2 * kMargin, lesson.about, grey, 2);
-    // A line for the pupil's name, top right, beside the title (whose 28 characters end before it).
-    const char* name = lang::text(Text::worksheet_name, language);
-    constexpr int kNameX = 780;
-    const int line_x = kNameX + render::text_width(font, name, 2) + 12;
-    render::draw_text(page, font, kNameX, kMargin + 14, name, ink, 2);
-    for (int x = line_x; x < kWidth - kMargin; ++x) page.set(x, kMargin + 30, render::Rgb{170, 170, 170});
-    for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i) {
-        const files::LessonStep& s = lesson.steps[i];
-        Options o = step_options(lesson, base, i);
-        o.width = kPanelW, o.height = kPanelH, o.frames = 60, o.hud = false, o.format = fmt;
-        Picture picture;
-        const PictureResult r = render_picture(o, load_scene(o), nullptr, font, picture);
-        if (r.stopped) return error = "stopped by a signal: the worksheet was not written.", false;
-        const int y0 = kTop + kRow * i;
-        for (int y = 0; y < kPanelH; ++y)
-            for (int x = 0; x < kPanelW; ++x) page.set(kMargin + x, y0 + y, picture.canvas.get(x, y));
-        const int tx = kMargin + kPanelW + 30, tw = kWidth - tx - kMargin;
-        char head[96];
-        std::snprintf(head, sizeof head, lang::text(Text::worksheet_step, language), i + 1, r.K,
-                      render::projection_words(o.projection, language));
-        int y = paragraph(page, font, tx, y0, tw, head, grey, 2) + 6;
-        y = paragraph(page, font, tx, y, tw, s.caption, ink, 2) + 10;
-        if (!s.question.empty()) {
-            char question[600];
-            std::snprintf(question, sizeof question, lang::text(Text::question, language), s.question.c_str());
-            y = paragraph(page, font, tx, y, tw, question, ink, 2) + 10;
-        }
-        if (!s.question.empty())  // room to write the answer
-            for (int k = 0; k < 3 && y + 30 < y0 + kPanelH; ++k, y += 30)
-                for (int x = tx; x < tx + tw; ++x) page.set(x, y + 24, render::Rgb{170, 170, 170});
-    }
-    return platform::write_png(path, page, error);
 }
 
 }  // namespace noneuclid::app

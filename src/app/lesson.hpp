@@ -1,7 +1,6 @@
 // A lesson played (files/lesson_file.hpp, docs/lessons.md): its steps one after another on one
 // display, each a run of its scene (app/run.hpp) with the step's caption on the HUD, ended by
-// what counts as done, by its seconds, or by the display closing; and the lesson as a printable
-// worksheet (a PNG of each step's picture beside its caption, question and what counts as done).
+// what counts as done, by its seconds, or by the display closing. (Its worksheet: app/worksheet.hpp.)
 #pragma once
 
 #include <memory>
@@ -80,10 +79,9 @@ private:
     int status_ = 0;
 };
 
-// The worksheet of `lesson` into `path` (a PNG): its title, and for each step the step's picture
-// drawn as `noneuclid render` would (o's size and palette), its caption, question and what
-// counts as done. False with one sentence in `error`.
-bool write_worksheet(const files::Lesson& lesson, const Options& o, const std::string& path, std::string& error);
+// The options of step `i`: the base's, then every earlier step's scene and projection carried
+// on, then this step's.
+Options step_options(const files::Lesson& lesson, const Options& base, int i);
 
 // `noneuclid lesson NAME [run's options]`: argv from `first` on are run's options; the display
 // chosen as run chooses it (app/cmd_run.cpp). Returns the exit status.

@@ -301,8 +301,14 @@ const OptionRow kOptions[] = {
     {"--limit", "R", kMeasure, "the limit circle's radius: marks must lie within it (default pi)", nullptr,
      [](Args& a, const std::string& opt, Options& o, Command) { o.measure.limit = a.number(opt, 1e-3, 1e4); }},
     // (The lesson's own two, after its name; app/cmd_lesson.cpp reads them and hands the rest to run.)
-    {"--worksheet", "FILE.png", kLesson, "its printable page, a PNG: each step's picture and question", nullptr,
+    {"--worksheet", "FILE.png|FILE.pdf", kLesson,
+     "the pupils' worksheet: each step's picture at the K its question asks about, its question and blanks for "
+     "the readings (a PDF if FILE ends in .pdf, else a PNG of the pages)", nullptr,
      [](Args& a, const std::string& opt, Options&, Command) { a.value(opt); }},
+    {"--answers", "FILE.png|FILE.pdf", kLesson, "the teacher's key: the same pages with the readings' values written in",
+     nullptr, [](Args& a, const std::string& opt, Options&, Command) { a.value(opt); }},
+    {"--paper", "a4|letter", kLesson, "the worksheet's paper (default a4)", nullptr,
+     [](Args& a, const std::string& opt, Options&, Command) { one_of(opt, a.value(opt), {"a4", "letter"}); }},
     {"--print", "", kLesson, "a built-in lesson's file on standard output, to change and play as FILE", nullptr,
      [](Args&, const std::string&, Options&, Command) {}},
     {"--timeout", "SECONDS", kButtons, "stop after this long (default: never)", nullptr,

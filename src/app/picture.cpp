@@ -15,6 +15,11 @@ void lay_trail(const render::Canvas& trail, const render::Canvas& c, uint32_t ba
         for (int x = 0; x < c.width(); ++x)
             if (trail.get_word(x, y) != background) c.set_word(x, y, trail.get_word(x, y));
 }
+PictureResult result(const Session& s, bool stopped, bool refused) {
+    PictureResult r;
+    r.K = s.curvature(), r.frame = s.frame(), r.stopped = stopped, r.refused = refused;
+    return r;
+}
 }  // namespace
 
 PictureResult render_picture(const Options& o, const world::Scene& scene, const Script* script,
@@ -54,15 +59,17 @@ PictureResult render_picture(const Options& o, const world::Scene& scene, const 
         if (o.timelapse > 0 && f % o.timelapse == 0) s->draw_world(layer, Layers::bodies, false);
         if (frames && f % every == 0) {
             draw();
-            if (!frames->frame(out.canvas, f)) return {s->curvature(), s->frame(), false, true};
+            if (!frames->frame(out.canvas, f)) return result(*s, false, true);
         }
         if (f == o.frames) break;
-        if (platform::stop_signal()) return {s->curvature(), s->frame(), true};  // (catch_stop_signals)
+        if (platform::stop_signal()) return result(*s, true, false);  // (catch_stop_signals)
         s->advance(player);
         if (progress) progress->at(f + 1, o.frames);
     }
     draw();
-    return {s->curvature(), s->frame(), false};
+    PictureResult r = result(*s, false, false);
+    r.readings = s->readings(r.reading, PictureResult::kMaxReadings);
+    return r;
 }
 
 PictureResult render_figure(const Figure& f, const Options& base, const render::Font& font, Picture& out) {

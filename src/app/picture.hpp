@@ -11,6 +11,7 @@
 #include "app/options.hpp"
 #include "app/script.hpp"
 #include "render/font.hpp"
+#include "world/instruments.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::app {
@@ -20,6 +21,10 @@ struct PictureResult {
     long frame = 0;        // steps taken
     bool stopped = false;  // a stop signal came (platform::catch_stop_signals): nothing drawn
     bool refused = false;  // the FrameSink refused a frame (it says why): nothing drawn
+    // The instruments that are on, read at the last frame (a worksheet's key).
+    static constexpr int kMaxReadings = 4;
+    int readings = 0;
+    world::GaugeReading reading[kMaxReadings];
 };
 
 // Takes the pictures of a run as it goes: the picture as render_picture would draw it, had the

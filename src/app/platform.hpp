@@ -167,6 +167,11 @@ std::string state_file(const std::string& name, std::string& error);
 // error or a stop signal (stop_signal()) while writing leaves `path` as it was. False with one
 // sentence in `error`.
 bool write_png(const std::string& path, const render::Canvas& canvas, std::string& error);
+// Writes `pages` as a PDF, one page each of width_pt x height_pt points filled by its image
+// (8-bit RGB, Flate-compressed with zlib: platform/files/pdf_file.cpp), atomically as
+// write_png writes. False with one sentence in `error`.
+bool write_pdf(const std::string& path, const std::vector<render::Canvas>& pages, double width_pt, double height_pt,
+               std::string& error);
 // Reads an 8-bit RGB or RGBA PNG into `rgb` (3 bytes a pixel, rows packed).
 bool read_png(const std::string& path, int& width, int& height, std::string& rgb, std::string& error);
 // Reads a PNG file as a texture (any PNG colour type and depth; alpha is ignored): at most

@@ -122,7 +122,7 @@ public:
         // The instruments' readings, with the HUD or without: they are the instruments' faces.
         int side = 0;
         for (const auto& g : world_.gauges())
-            if (g.on() && side < 2)
+            if (g.on() && side < 2 && options_.panels)
                 render::draw_measure_panel(c, font_, render::measure_panel(g.reading(), options_.language), side++);
         if (!options_.hud) return;
         render::HudInfo info;
@@ -157,6 +157,12 @@ public:
     double curvature() const override { return static_cast<double>(world_.K); }
     long score() const override { return world_.game().score; }
     long fire_presses() const override { return fire_presses_; }
+    int readings(world::GaugeReading* out, int max) const override {
+        int n = 0;
+        for (const auto& g : world_.gauges())
+            if (g.on() && n < max) out[n++] = g.reading();
+        return n;
+    }
     long presses() const override { return presses_; }
     bool attract() const override { return autopilot_.active(); }
     SoundFrame sound() const override { return sound_; }

@@ -22,6 +22,7 @@
 #include "lang/lang.hpp"
 #include "render/font.hpp"
 #include "files/dump.hpp"
+#include "world/instruments.hpp"
 #include "world/scene.hpp"
 
 namespace noneuclid::app {
@@ -44,6 +45,7 @@ struct SessionOptions {
     double dt = kinds::kStepSeconds;  // world seconds per step
     long best = 0;                // a game's high score before this session (its HUD shows it)
     bool muted = false;           // the sound starts muted (the mute control turns it on and off)
+    bool panels = true;           // the instruments' readings beside the disc (a worksheet's picture: none)
 };
 
 // Told of each game that ends (the high-score table, app/high_scores.hpp).
@@ -105,6 +107,9 @@ public:
     virtual long fire_presses() const = 0; // presses of fire so far (a lesson's "press fire to go on")
     virtual long presses() const = 0;      // presses of any button or key so far (not the autopilot's)
     virtual bool attract() const = 0;      // attract mode's autopilot flies now
+    // The readings of the instruments that are on (at most `max`, in the world's order): their
+    // count.
+    virtual int readings(world::GaugeReading* out, int max) const = 0;
     // What the last step asks of the sound (app/sound.hpp): the game's cues that began in it (a
     // shot fired, a hit, a crash, a new level, game over), thrust held, the mute. Attract mode
     // is silent: an idle kiosk does not play to the room.

@@ -167,6 +167,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.large_hud = o.large_hud;
     so.hud_scale = o.hud_scale;
     so.caption = o.caption;
+    so.panels = o.panels;
     so.one_button = o.one_button;
     so.draw.palette = o.palette;
     const render::PaletteFrame frame = render::palette_frame(o.palette);

@@ -11,7 +11,7 @@
 //     projection = "equidistant"
 //     antialias = false
 //     hud = true
-//     palette = "scene"       # scene, colour-blind, high-contrast
+//     palette = "scene"       # scene, colour-blind, high-contrast, print
 //     large_hud = false       # the HUD's text twice as large
 //     one_button = false      # fire alone plays
 //     sound = false           # the game's sound (docs/sound.md)

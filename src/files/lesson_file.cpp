@@ -42,13 +42,20 @@ void read_lesson(const toml::table& root, Lesson& out) {
         const toml::table& t = *n.as_table();
         const std::string context = "step " + std::to_string(out.steps.size() + 1) + ": ";
         const Reader s(t, context);
-        s.only({"caption", "question", "scene", "curvature", "projection", "done", "seconds"});
+        s.only({"caption", "question", "question_curvature", "scene", "curvature", "projection", "done", "seconds"});
         LessonStep step;
         step.caption = text_of(s, t, "caption", context);
         if (step.caption.empty()) throw Bad{t.source(), context + "expected caption = \"...\": what the step shows"};
         step.question = text_of(s, t, "question", context);
         step.scene = s.plain_string("scene", "");
         if (t.get("curvature")) step.has_curvature = true, step.curvature = s.number("curvature", 0, -1, 1, "K");
+        if (t.get("question_curvature")) {
+            if (step.question.empty())
+                throw Bad{t.get("question_curvature")->source(),
+                          context + "question_curvature is the K the question asks about: give the step a question too"};
+            step.has_question_curvature = true;
+            step.question_curvature = s.number("question_curvature", 0, -1, 1, "K");
+        }
         step.projection = s.string("projection", "");
         geo::Projection p{};
         if (!step.projection.empty() && !geo::parse_projection_name(step.projection, p))

@@ -11,6 +11,7 @@
 //     curvature = 0              # K at the start (default: the scene's)
 //     projection = "equidistant" # (default: the last step's, else equidistant)
 //     question = "What happens to the squares as K grows?"
+//     question_curvature = 1     # the K the question asks about (default: the step's)
 //     done = "curvature above 0.9"   # or "curvature below -0.9", "score 100", "seconds" (below)
 //     seconds = 30               # at most this long (0: until done, or fire)
 #pragma once
@@ -36,6 +37,10 @@ struct LessonStep {
     bool has_curvature = false;
     double curvature = 0;
     std::string projection;      // "" the last step's
+    // The K the question asks about, where it is not the K the step starts at (a step that
+    // starts at 0 and asks "what is the sum at K = +1?"): the worksheet's picture is there.
+    bool has_question_curvature = false;
+    double question_curvature = 0;
     LessonDone done;
     double seconds = 0;          // 0: no time limit
 };

@@ -75,6 +75,7 @@ caption = "Halte jetzt K+ bis +1: dasselbe Dreieck auf einer Kugel. Beobachte di
 curvature = 0
 done = "curvature above 0.9"
 question = "Wie groß ist die Winkelsumme bei K = +1? Mehr oder weniger als 180?"
+question_curvature = 1
 seconds = 45
 
 [[step]]
@@ -82,6 +83,7 @@ caption = "Und halte K- bis -1: auf einem Sattel werden die Winkel kleiner."
 curvature = 1
 done = "curvature below -0.9"
 question = "Wie groß ist die Winkelsumme bei K = -1?"
+question_curvature = -1
 seconds = 45
 
 [[step]]

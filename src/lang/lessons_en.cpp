@@ -77,6 +77,7 @@ caption = "Now hold K+ to +1: the same triangle on a sphere. Watch the angle sum
 curvature = 0
 done = "curvature above 0.9"
 question = "What is the angle sum at K = +1? Is it more or less than 180?"
+question_curvature = 1
 seconds = 45
 
 [[step]]
@@ -84,6 +85,7 @@ caption = "And hold K- to -1: on a saddle the angles shrink."
 curvature = 1
 done = "curvature below -0.9"
 question = "What is the angle sum at K = -1?"
+question_curvature = -1
 seconds = 45
 
 [[step]]

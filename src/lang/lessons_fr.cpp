@@ -75,6 +75,7 @@ caption = "Maintenez K+ jusqu'à +1 : le même triangle sur une sphère. Regarde
 curvature = 0
 done = "curvature above 0.9"
 question = "Quelle est la somme des angles à K = +1 ? Plus ou moins que 180 ?"
+question_curvature = 1
 seconds = 45
 
 [[step]]
@@ -82,6 +83,7 @@ caption = "Et maintenez K- jusqu'à -1 : sur une selle les angles rétrécissent
 curvature = 1
 done = "curvature below -0.9"
 question = "Quelle est la somme des angles à K = -1 ?"
+question_curvature = -1
 seconds = 45
 
 [[step]]

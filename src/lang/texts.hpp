@@ -61,6 +61,9 @@
     X(question, "Question: %s")                                                                     \
     X(worksheet_name, "Name:")                                                                      \
     X(worksheet_step, "%d. K = %+.2f, %s")                                                          \
+    X(worksheet_readings, "Measure at K = %+.2f:")                                                  \
+    X(worksheet_key, "Key")       /* where a pupil's page has "Name:" */                            \
+    X(worksheet_page, "page %d of %d")                                                              \
     /* the web page */                                                                              \
     X(page_title, "space of constant curvature K, from −1 (hyperbolic) through 0 (flat) to +1 (spherical)") \
     X(page_scene, "scene")                                                                          \

@@ -42,26 +42,78 @@ int columns(const char* s) {
     return n;
 }
 
-// A reading: its label, its value right-aligned to end at column kValueEnd (one space after the
-// label at least), and its unit: "°" against the number, as angles are written, a length's or an
-// area's after a space; none for a ratio. The value has `decimals` places, fewer where it would
-// be wider than five characters (six with its sign), so that a line keeps within the panel.
-constexpr int kValueEnd = 10;
-void reading(MeasurePanel& p, const char* label, double v, int decimals, const char* unit) {
-    char value[24];
+// A value with `decimals` places, fewer where it would be wider than five characters (six with
+// its sign), so that a line keeps within the panel; a value that rounds to zero has no sign
+// ("-0.00" is a rounding error's, not a reading).
+void add(PanelReadings& out, const char* label, double v, int decimals, const char* unit) {
+    if (out.count >= PanelReadings::kMax) return;
+    PanelReading& r = out.row[out.count++];
     for (;; --decimals) {
-        std::snprintf(value, sizeof value, "%.*f", decimals, v);
-        if (decimals == 0 || static_cast<int>(std::strlen(value)) <= 5 + (value[0] == '-')) break;
+        std::snprintf(r.value, sizeof r.value, "%.*f", decimals, v);
+        if (decimals == 0 || static_cast<int>(std::strlen(r.value)) <= 5 + (r.value[0] == '-')) break;
     }
-    // A value that rounds to zero has no sign ("-0.00" is a rounding error's, not a reading).
-    if (value[0] == '-' && std::strspn(value, "-0.") == std::strlen(value))
-        std::memmove(value, value + 1, std::strlen(value));
-    const int pad = std::max(1, kValueEnd - columns(label) - static_cast<int>(std::strlen(value)));
-    const char* space = *unit && std::strcmp(unit, "°") != 0 ? " " : "";
-    line(p, "%s%*s%s%s%s", label, pad, "", value, space, unit);
+    if (r.value[0] == '-' && std::strspn(r.value, "-0.") == std::strlen(r.value))
+        std::memmove(r.value, r.value + 1, std::strlen(r.value));
+    std::snprintf(r.label, sizeof r.label, "%s", label);
+    std::snprintf(r.unit, sizeof r.unit, "%s", unit);
+}
+
+// A reading's line: its label, its value right-aligned to end at column kValueEnd (one space
+// after the label at least), and its unit: "°" against the number, as angles are written, a
+// length's or an area's after a space; none for a ratio.
+constexpr int kValueEnd = 10;
+void reading(MeasurePanel& p, const PanelReading& r) {
+    const int pad = std::max(1, kValueEnd - columns(r.label) - static_cast<int>(std::strlen(r.value)));
+    const char* space = *r.unit && std::strcmp(r.unit, "°") != 0 ? " " : "";
+    line(p, "%s%*s%s%s%s", r.label, pad, "", r.value, space, r.unit);
 }
 
 }  // namespace
+
+PanelReadings panel_readings(const world::GaugeReading& r, lang::Language language) {
+    using lang::Text;
+    const auto t = [language](Text name) { return lang::text(name, language); };
+    PanelReadings out;
+    if (r.waiting || r.error != geo::MeasureError::none) return out;
+    const char* const deg = "°";
+    const char* const u = t(Text::unit_length);
+    const char* const u2 = t(Text::unit_area);
+    switch (r.kind) {
+        case geo::Instrument::triangle:
+            for (int i = 0; i < 3; ++i) {
+                const char name[2] = {static_cast<char>('A' + i), 0};
+                add(out, name, r.triangle.angle_deg[i], 1, deg);
+            }
+            add(out, t(Text::angle_sum), r.triangle.sum_deg, 1, deg);
+            add(out, "exc", r.triangle.excess_deg, 1, deg);
+            add(out, "area", r.triangle.area, 3, u2);
+            add(out, "K*A", r.triangle.k_area_deg, 1, deg);
+            break;
+        case geo::Instrument::circle:
+            add(out, "r", r.radius, 3, u);
+            add(out, "C", r.circle.circumference, 3, u);
+            add(out, "C0", r.circle.flat_circumference, 3, u);
+            add(out, "C/C0", r.circle.circumference_ratio, 3, "");
+            add(out, "A", r.circle.area, 3, u2);
+            add(out, "A0", r.circle.flat_area, 3, u2);
+            add(out, "A/A0", r.circle.area_ratio, 3, "");
+            break;
+        case geo::Instrument::parallels:
+            add(out, "d", r.distance, 3, u);
+            add(out, "s", r.length, 3, u);
+            add(out, "d(s)", r.parallels.distance, 3, u);  // (apart after s)
+            add(out, "ratio", r.parallels.ratio, 3, "");
+            if (r.parallels.meet) add(out, "meet", r.parallels.meet_at, 3, u);
+            break;
+        case geo::Instrument::polygon:
+            add(out, "a", r.side, 3, u);
+            add(out, "ang", r.polygon.angle_deg, 1, deg);
+            add(out, r.polygon.gap_deg >= 0 ? "gap" : "over", std::fabs(r.polygon.gap_deg), 1, deg);
+            add(out, "K", r.polygon.closing_K, 3, "");  // (the K at which it closes)
+            break;
+    }
+    return out;
+}
 
 MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language) {
     using lang::Text;
@@ -79,44 +131,12 @@ MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language
         sentence(p, geo::measure_error_sentence(r.error), kPanelColumns);
         return p;
     }
-    const char* const deg = "°";
-    const char* const u = t(Text::unit_length);
-    const char* const u2 = t(Text::unit_area);
-    switch (r.kind) {
-        case geo::Instrument::triangle:
-            for (int i = 0; i < 3; ++i) {
-                const char name[2] = {static_cast<char>('A' + i), 0};
-                reading(p, name, r.triangle.angle_deg[i], 1, deg);
-            }
-            reading(p, t(Text::angle_sum), r.triangle.sum_deg, 1, deg);
-            reading(p, "exc", r.triangle.excess_deg, 1, deg);
-            reading(p, "area", r.triangle.area, 3, u2);
-            reading(p, "K*A", r.triangle.k_area_deg, 1, deg);
-            break;
-        case geo::Instrument::circle:
-            reading(p, "r", r.radius, 3, u);
-            reading(p, "C", r.circle.circumference, 3, u);
-            reading(p, "C0", r.circle.flat_circumference, 3, u);
-            reading(p, "C/C0", r.circle.circumference_ratio, 3, "");
-            reading(p, "A", r.circle.area, 3, u2);
-            reading(p, "A0", r.circle.flat_area, 3, u2);
-            reading(p, "A/A0", r.circle.area_ratio, 3, "");
-            break;
-        case geo::Instrument::parallels:
-            reading(p, "d", r.distance, 3, u);
-            reading(p, "s", r.length, 3, u);
-            reading(p, "d(s)", r.parallels.distance, 3, u);  // (apart after s)
-            reading(p, "ratio", r.parallels.ratio, 3, "");
-            if (r.parallels.meet) reading(p, "meet", r.parallels.meet_at, 3, u);
-            break;
-        case geo::Instrument::polygon:
-            line(p, "%d x {%d}", r.around, r.sides);
-            reading(p, "a", r.side, 3, u);
-            reading(p, "ang", r.polygon.angle_deg, 1, deg);
-            reading(p, r.polygon.gap_deg >= 0 ? "gap" : "over", std::fabs(r.polygon.gap_deg), 1, deg);
-            line(p, "%s", t(Text::closes_at));
-            reading(p, "K", r.polygon.closing_K, 3, "");
-            break;
+    const PanelReadings rows = panel_readings(r, language);
+    const bool polygon = r.kind == geo::Instrument::polygon;
+    if (polygon) line(p, "%d x {%d}", r.around, r.sides);
+    for (int i = 0; i < rows.count; ++i) {
+        if (polygon && i + 1 == rows.count) line(p, "%s", t(Text::closes_at));  // (before its K)
+        reading(p, rows.row[i]);
     }
     return p;
 }

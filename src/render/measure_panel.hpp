@@ -26,6 +26,20 @@ struct MeasurePanel {
     char text[kLines][kWidth] = {};
 };
 
+// A reading's numbers as the panel shows them, without the panel's other lines (the worksheet's
+// blanks and its key's values, app/worksheet.hpp): a label ("A", "sum", "area"), the value
+// rounded and its unit ("°", the language's "u²", "" for a ratio). None while the instrument
+// waits for marks or cannot measure.
+struct PanelReading {
+    char label[16] = {}, value[16] = {}, unit[8] = {};
+};
+struct PanelReadings {
+    static constexpr int kMax = 8;
+    int count = 0;
+    PanelReading row[kMax];
+};
+PanelReadings panel_readings(const world::GaugeReading& r, lang::Language language = lang::Language::en);
+
 // The panel's lines for a reading.
 MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language = lang::Language::en);
 // Draws it on `side` 0 (right of the disc) or 1 (left).

@@ -29,6 +29,16 @@ constexpr Rgb kPurple{204, 121, 167};  // Okabe-Ito's reddish purple
 // High contrast: a line's least relative luminance, 7:1 against black ((0.3 + 0.05) / 0.05) with
 // room for the rounding to 8 bits.
 constexpr double kLeast = 0.305;
+// Print: a line's most relative luminance, 4.5:1 against white paper ((1 + 0.05) / (0.18 +
+// 0.05)); a grid line's, lighter than the lines it carries but still 3:1 ((1.05) / (0.29 + 0.05),
+// with room for the rounding to 8 bits).
+constexpr double kPrintLine = 0.18, kPrintGrid = 0.29;
+// `own` in its own hue at luminance y or darker; a grey with no hue to keep (black, white) grey.
+Rgb darkened(Rgb own, double y) {
+    if (luminance(own) <= y) return own;
+    if (own.r == own.g && own.g == own.b) return at_luminance({255, 255, 255}, y);
+    return at_luminance(own, y);
+}
 
 }  // namespace
 
@@ -68,6 +78,7 @@ Rgb palette_line(Palette p, LineRole role, Rgb own) {
                 }
             }
             break;
+        case Palette::print: return darkened(own, role == LineRole::grid ? kPrintGrid : kPrintLine);
     }
     return own;
 }
@@ -78,6 +89,10 @@ PaletteFrame palette_frame(Palette p) {
     if (p == Palette::high_contrast) {
         f.background = {0, 0, 0}, f.outside = {28, 28, 28}, f.rim = {255, 255, 255};
         f.text = {255, 255, 255}, f.dim = {200, 200, 200};
+    }
+    if (p == Palette::print) {  // white paper, the rest dark (a page uses little toner)
+        f.background = {255, 255, 255}, f.outside = {245, 245, 245}, f.rim = {60, 60, 60};
+        f.text = {20, 20, 20}, f.dim = {90, 90, 90};
     }
     return f;
 }

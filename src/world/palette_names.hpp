@@ -10,8 +10,8 @@
 
 namespace noneuclid::world {
 
-enum class Palette : uint8_t { scene, colour_blind, high_contrast };
-inline constexpr Palette kPalettes[] = {Palette::scene, Palette::colour_blind, Palette::high_contrast};
+enum class Palette : uint8_t { scene, colour_blind, high_contrast, print };
+inline constexpr Palette kPalettes[] = {Palette::scene, Palette::colour_blind, Palette::high_contrast, Palette::print};
 
 struct PaletteRow {
     Palette p;
@@ -22,6 +22,7 @@ inline constexpr PaletteRow kPaletteRows[] = {
     {Palette::scene, "scene", "every body in its own colour (the default)"},
     {Palette::colour_blind, "colour-blind", "Okabe-Ito colours by role, apart under every colour-vision deficiency"},
     {Palette::high_contrast, "high-contrast", "bright lines and text on black, 7:1 contrast or more"},
+    {Palette::print, "print", "dark lines on white paper, each in its own hue (the worksheets' default)"},
 };
 inline const char* palette_name(Palette p) { return kPaletteRows[static_cast<int>(p)].name; }
 inline const char* palette_help(Palette p) { return kPaletteRows[static_cast<int>(p)].help; }

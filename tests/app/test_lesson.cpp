@@ -1,7 +1,6 @@
 // Lessons played (app/lesson.hpp) on a display that presses keys at given frames, and printed:
 // a step ends when its seconds run out or when what counts as done happens (K past a value, a
-// press of fire), the next begins at its own curvature, and the worksheet is a PNG of the
-// lesson's steps (read back).
+// press of fire), the next begins at its own curvature (the worksheet: test_worksheet.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -103,27 +102,6 @@ TEST(Lesson, AStepWithoutSecondsEndsOnFire) {
     EXPECT_NEAR(p.began[1], 300, 2);
     EXPECT_EQ(p.K[1], -0.5);
     EXPECT_NEAR(d.presented() - p.began[1], 60, 2);
-}
-
-TEST(Lesson, TheWorksheetIsAPageOfItsSteps) {
-    files::Lesson l;
-    ASSERT_TRUE(files::builtin_lesson("lines", l));
-    const std::string path = ::testing::TempDir() + "lesson_worksheet.png";
-    std::string error;
-    ASSERT_TRUE(app::write_worksheet(l, app::defaults(app::Command::run), path, error)) << error;
-    int w = 0, h = 0;
-    std::string rgb;
-    ASSERT_TRUE(platform::read_png(path, w, h, rgb, error)) << error;
-    EXPECT_EQ(w, 1240);
-    EXPECT_EQ(h, 190 + 340 * static_cast<int>(l.steps.size()) + 60);
-    auto at = [&](int x, int y) { return std::string(rgb, (static_cast<std::size_t>(y) * w + x) * 3, 3); };
-    EXPECT_EQ(at(5, 5), std::string(3, '\xff')) << "white paper";
-    for (int i = 0; i < static_cast<int>(l.steps.size()); ++i) {
-        // Each step's picture: its disc's dark background at the panel's centre-left.
-        const std::string p = at(60 + 120, 190 + 340 * i + 144);
-        EXPECT_LT(static_cast<unsigned char>(p[0]) + static_cast<unsigned char>(p[1]) + static_cast<unsigned char>(p[2]), 120)
-            << "step " << i + 1;
-    }
 }
 
 }  // namespace lesson_test

@@ -138,7 +138,7 @@ TEST(Boards, ErrorsNameTheFileThePlaceAndTheFix) {
         {"[display]\nengine = \"quantum\"\n", "t.toml:2:10", "expected engine = \"fixed\""},
         {"[display]\nprojection = \"mercator\"\n", "t.toml:2:14", "expected projection = \"equidistant\""},
         {"[display]\nfps = 0\n", "t.toml:2:7", "'fps' must be from 1 to 1000"},
-        {"[display]\npalette = \"sepia\"\n", "t.toml:2:11", "expected palette = \"scene\", \"colour-blind\" or \"high-contrast\", found \"sepia\""},
+        {"[display]\npalette = \"sepia\"\n", "t.toml:2:11", "expected palette = \"scene\", \"colour-blind\", \"high-contrast\" or \"print\", found \"sepia\""},
         {"[display]\nlarge_hud = 2\n", "t.toml:2:13", "large_hud"},
         {"[display]\nlanguage = \"es\"\n", "t.toml:2:12", "expected language = en, de or fr (or \"\" for the locale's), found \"es\""},
         {"[display]\none_button = \"yes\"\n", "t.toml:2:14", "one_button"},

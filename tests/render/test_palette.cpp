@@ -131,6 +131,41 @@ TEST(Palette, TheHighContrastPalettesLinesAndTextAreAtSevenToOne) {
     EXPECT_LT(contrast({45, 58, 80}, render::PaletteFrame{}.background), 3);
 }
 
+// CIELAB hue angle, degrees.
+double hue(Rgb c) {
+    const auto l = lab(c, kNormal);
+    return std::atan2(l[2], l[1]) * 180 / 3.14159265358979323846;
+}
+
+// The print palette: on white paper every line of every scene's colours at 4.5:1 or more (WCAG
+// AA for text), a grid line at 3:1 and lighter than the lines; each keeps its own hue (colour
+// kept for meaning) within 5 degrees of CIELAB hue, a colour darkened rather than replaced.
+TEST(Palette, ThePrintPalettesLinesAreDarkOnWhiteInTheirOwnHue) {
+    const Palette p = Palette::print;
+    const render::PaletteFrame f = render::palette_frame(p);
+    EXPECT_EQ(f.background, (Rgb{255, 255, 255}));
+    double worst_line = 1e9, worst_grid = 1e9, worst_hue = 0;
+    for (const Rgb own : scene_colours())
+        for (int role = 0; role <= static_cast<int>(LineRole::instrument); ++role) {
+            const Rgb c = render::palette_line(p, static_cast<LineRole>(role), own);
+            const double k = contrast(c, f.background);
+            if (static_cast<LineRole>(role) == LineRole::grid) worst_grid = std::min(worst_grid, k);
+            else worst_line = std::min(worst_line, k);
+            const auto l = lab(own, kNormal);
+            if (std::hypot(l[1], l[2]) > 10) {  // (a colour with a hue to keep)
+                const double d = std::fabs(std::remainder(hue(c) - hue(own), 360.0));
+                worst_hue = std::max(worst_hue, d);
+            }
+        }
+    for (const Rgb c : {f.rim, f.text, f.dim}) worst_line = std::min(worst_line, contrast(c, f.background));
+    EXPECT_GE(worst_line, 4.5);
+    EXPECT_GE(worst_grid, 3.0);
+    for (const Rgb own : scene_colours())  // a grid line no darker than a body of its colour
+        EXPECT_LE(contrast(render::palette_line(p, LineRole::grid, own), f.background),
+                  contrast(render::palette_line(p, LineRole::body, own), f.background) + 1e-9);
+    EXPECT_LT(worst_hue, 5.0);
+}
+
 // A frame of `scene` drawn aliased in palette p on a memory canvas: the set of its pixels'
 // colours, and the set the palette allows (its frame's colours and each body's line colour).
 void drawn_colours(const char* scene, Palette p, std::set<uint32_t>& seen, std::set<uint32_t>& allowed, Rgb& ship) {
@@ -161,13 +196,15 @@ void drawn_colours(const char* scene, Palette p, std::set<uint32_t>& seen, std::
 
 TEST(Palette, DrawnFramesUseOnlyThePalettesColours) {
     for (const char* scene : {"kiosk", "earth", "asteroids"})
-        for (const Palette p : {Palette::colour_blind, Palette::high_contrast}) {
+        for (const Palette p : {Palette::colour_blind, Palette::high_contrast, Palette::print}) {
             SCOPED_TRACE(std::string(scene) + " " + render::palette_name(p));
             std::set<uint32_t> seen, allowed;
             Rgb ship{};
             drawn_colours(scene, p, seen, allowed, ship);
             for (const uint32_t c : seen) EXPECT_TRUE(allowed.count(c)) << std::hex << c;
-            EXPECT_EQ(ship, render::palette_line(p, LineRole::ship, {}));
+            if (p != Palette::print) {  // (print: by its own colour)
+                EXPECT_EQ(ship, render::palette_line(p, LineRole::ship, {}));
+            }
             if (std::string(scene) != "asteroids") {  // (the game's ship waits for "press fire")
                 EXPECT_TRUE(seen.count(uint32_t{ship.r} << 16 | uint32_t{ship.g} << 8 | ship.b)) << "the ship is drawn in its role's colour";
             }
