@@ -263,6 +263,8 @@ EMSCRIPTEN_KEEPALIVE const char* nw_engine() {
 // 1 when the run's scene has the game (fire starts it and fires): the page shows the fire
 // button and mentions Space only then.
 EMSCRIPTEN_KEEPALIVE int nw_has_game() { return g_run && g_run->scene().game.on ? 1 : 0; }
+// 1 if the scene has bumps (an uneven world: the < and > keys turn them).
+EMSCRIPTEN_KEEPALIVE int nw_has_bumps() { return g_run && !g_run->scene().bumps.empty() ? 1 : 0; }
 // The page's space changed (a turned phone, full screen): the canvas is width x height pixels
 // from the next frame on, and the recording says so, as a resized window's does.
 EMSCRIPTEN_KEEPALIVE void nw_resize(int width, int height) {

@@ -42,6 +42,8 @@ extern const Entry kTexts_de[] = {
     {Text::mark_of, "Feuer: Punkt %d"},
     {Text::of_needed, "von %d"},
     {Text::angle_sum, "Summe"},
+    {Text::label_excess, "Exz"},
+    {Text::label_area, "Fl."},
     {Text::closes_at, "schließt bei"},
     {Text::unit_length, "LE"},  // Längeneinheit, as German schools write it
     {Text::unit_area, "FE"},    // Flächeneinheit
@@ -67,8 +69,9 @@ extern const Entry kTexts_de[] = {
     {Text::page_own_scene, "eine eigene Szene (TOML)"},
     {Text::page_run_scene, "diese Szene starten"},
     {Text::page_or, "oder"},
-    {Text::page_help, "Tasten: Pfeile oder WASD fliegen, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, < und > drehen die Beulen einer unebenen Welt, R beginnt neu, Esc beendet den Lauf."},
-    {Text::page_help_game, "Tasten: Pfeile oder WASD fliegen, die Leertaste feuert, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, < und > drehen die Beulen einer unebenen Welt, R beginnt neu, Esc beendet den Lauf."},
+    {Text::page_help, "Tasten: Pfeile oder WASD fliegen, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, R beginnt neu, Esc beendet den Lauf."},
+    {Text::page_help_game, "Tasten: Pfeile oder WASD fliegen, die Leertaste feuert, + und − (oder ] und [) krümmen den Raum, 1 2 3 setzen K auf −1, 0, +1, P wählt die nächste Projektion, H das HUD, N schaltet den Ton stumm, R beginnt neu, Esc beendet den Lauf."},
+    {Text::page_help_bumps, "< und > drehen die Beulen dieser unebenen Welt."},
     {Text::page_loading, "lädt…"},
     {Text::page_not_running, "läuft nicht"},
     {Text::page_ended, "beendet"},

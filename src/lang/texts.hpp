@@ -50,6 +50,8 @@
     X(mark_of, "fire: mark %d")                                                                     \
     X(of_needed, "of %d")                                                                           \
     X(angle_sum, "sum")                                                                             \
+    X(label_excess, "exc")  /* a triangle's angular excess, on the panel (three or four letters) */ \
+    X(label_area, "area")   /* its area */                                                      \
     X(closes_at, "closes at")                                                                       \
     X(unit_length, "u")   /* the world's unit of length (K = +1: the sphere of radius 1) */         \
     X(unit_area, "u²")    /* its square */                                                          \
@@ -77,8 +79,9 @@
     X(page_own_scene, "your own scene (TOML)")                                                      \
     X(page_run_scene, "run this scene")                                                             \
     X(page_or, "or")                                                                                \
-    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, < and > turn an uneven world's bumps, R reset, Esc ends the run.") \
-    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, < and > turn an uneven world's bumps, R reset, Esc ends the run.") \
+    X(page_help, "Keys: arrows or WASD fly, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
+    X(page_help_game, "Keys: arrows or WASD fly, Space fires, + and − (or ] and [) bend space, 1 2 3 set K to −1, 0, +1, P the next projection, H the HUD, N mutes the sound, R reset, Esc ends the run.") \
+    X(page_help_bumps, "< and > turn the bumps of this uneven world.")                           \
     X(page_loading, "loading…")                                                                     \
     X(page_not_running, "not running")                                                              \
     X(page_ended, "ended")                                                                          \

@@ -85,8 +85,8 @@ PanelReadings panel_readings(const world::GaugeReading& r, lang::Language langua
                 add(out, name, r.triangle.angle_deg[i], 1, deg);
             }
             add(out, t(Text::angle_sum), r.triangle.sum_deg, 1, deg);
-            add(out, "exc", r.triangle.excess_deg, 1, deg);
-            add(out, "area", r.triangle.area, 3, u2);
+            add(out, t(Text::label_excess), r.triangle.excess_deg, 1, deg);
+            add(out, t(Text::label_area), r.triangle.area, 3, u2);
             add(out, "K*A", r.triangle.k_area_deg, 1, deg);
             break;
         case geo::Instrument::circle:

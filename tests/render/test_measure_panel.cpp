@@ -130,9 +130,10 @@ TEST(MeasurePanel, ReadingsCarryTheirUnits) {
     EXPECT_EQ(line_of(render::measure_panel(flat), "exc"), "exc    0.0°");
 }
 
+// (German labels: "Fl." for Fläche, "Exz" for Exzess.)
 TEST(MeasurePanel, GermanUnitsAreLEAndFE) {
     const MeasurePanel p = render::measure_panel(triangle_at(1), lang::Language::de);
-    expect_reading(p, "area", triangle_at(1).triangle.area, 3, " FE");
+    expect_reading(p, "Fl.", triangle_at(1).triangle.area, 3, " FE");
     expect_reading(p, "Summe", triangle_at(1).triangle.sum_deg, 1, "°");
     const MeasurePanel q = render::measure_panel(circle_at(-1, 2), lang::Language::de);
     expect_reading(q, "r", 2, 3, " LE");

@@ -136,8 +136,8 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     await copy.close();
   });
 
-  await check('the fire button and the help\'s "Space fires" show only in a scene with the game', async () => {
-    for (const [query, game] of [['', false], ['scene=kiosk', false], ['scene=asteroids', true]]) {
+  await check('the fire button and the help\'s "Space fires" show only in a scene with the game, the bumps\' keys only in an uneven world', async () => {
+    for (const [query, game, bumps] of [['', false, false], ['scene=kiosk', false, false], ['scene=asteroids', true, false], ['scene=lens', false, true]]) {
       const {page, started} = await open(query);
       expect(started === true, `?${query}: the page did not start`);
       const m = await page.evaluate(`(() => {
@@ -146,6 +146,7 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
       })()`);
       expect(m.button === game, `?${query}: the fire button is ${m.button ? 'shown' : 'hidden'}`);
       expect(m.help.includes('Space fires') === game, `?${query}: the help says '${m.help}'`);
+      expect(m.help.includes('< and > turn the bumps') === bumps, `?${query}: the help says '${m.help}'`);
       await page.close();
     }
   });

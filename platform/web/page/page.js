@@ -134,16 +134,16 @@
     return true;
   }
 
-  // The fire button and the help's "Space fires" only where fire does something: the game (a
-  // lesson's step may change the scene, so each frame asks).
-  let game = null;
+  // The fire button and the help's "Space fires" only where fire does something: the game; the
+  // bumps' keys only in an uneven world (a lesson's step may change the scene, so each frame asks).
+  let game = null, bumps = null;
   function showGame() {
-    const now = mod._nw_has_game() === 1;
-    if (now === game) return;
-    game = now;
+    const now = mod._nw_has_game() === 1, uneven = mod._nw_has_bumps() === 1;
+    if (now === game && uneven === bumps) return;
+    game = now, bumps = uneven;
     const fire = document.querySelector('#touch button[data-control=fire]');
     if (fire) fire.hidden = !game;
-    $('help').textContent = t(game ? 'page_help_game' : 'page_help');
+    $('help').textContent = t(game ? 'page_help_game' : 'page_help') + (bumps ? ' ' + t('page_help_bumps') : '');
   }
 
   function frame(mine) {
