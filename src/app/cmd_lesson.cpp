@@ -5,7 +5,6 @@
 // and change).
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -96,14 +95,9 @@ int lesson_command(int argc, char** argv, int first) {
     if (!base.record.empty()) usage_error("--record keeps one scene's run: a lesson's steps are not recorded (record a step with run --scene).");
     if (!worksheet.empty() || !answers.empty()) {
         // A .pdf is a PDF; any other name must end .png.
-        const auto is_pdf = [](const std::string& p) {
-            std::string ext = std::filesystem::path(p).extension().string();
-            for (char& ch : ext) ch = static_cast<char>(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
-            return ext == ".pdf";
-        };
         for (const Own& k : {own[0], own[1]})
             if (!k.value->empty())
-                check_output(k.name, *k.value, is_pdf(*k.value) ? ".pdf" : ".png", "a PNG, or a PDF when named .pdf");
+                check_output(k.name, *k.value, names_pdf(*k.value) ? ".pdf" : ".png", "a PNG, or a PDF when named .pdf");
         for (const Own& k : {own[0], own[1]}) {
             if (k.value->empty()) continue;
             std::string error;

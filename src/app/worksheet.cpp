@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/lesson.hpp"
 #include "app/picture.hpp"
@@ -138,6 +139,12 @@ render::Canvas Worksheet::page(std::size_t i) const {
     return render::Canvas(px, width, height, std::ptrdiff_t{width} * 4, render::PixelFormat::xrgb8888());
 }
 
+bool names_pdf(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& ch : ext) ch = static_cast<char>(ch >= 'A' && ch <= 'Z' ? ch - 'A' + 'a' : ch);
+    return ext == ".pdf";
+}
+
 double asked_curvature(const files::LessonStep& step, double start_K) {
     return step.has_question_curvature ? step.question_curvature : start_K;
 }
@@ -206,9 +213,7 @@ bool write_worksheet(const files::Lesson& lesson, const Options& base, const std
     if (!make_worksheet(lesson, base, answers, paper, w, error)) return false;
     std::vector<render::Canvas> pages;
     for (std::size_t i = 0; i < w.pages.size(); ++i) pages.push_back(w.page(i));
-    const bool pdf = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".pdf") == 0 ||
-                                          path.compare(path.size() - 4, 4, ".PDF") == 0);
-    if (pdf) return platform::write_pdf(path, pages, w.width_pt, w.height_pt, error);
+    if (names_pdf(path)) return platform::write_pdf(path, pages, w.width_pt, w.height_pt, error);
     // A PNG: the pages one below the other.
     std::vector<uint8_t> all;
     for (const std::vector<uint8_t>& p : w.pages) all.insert(all.end(), p.begin(), p.end());

@@ -55,7 +55,10 @@ double asked_curvature(const files::LessonStep& step, double start_K);
 bool make_worksheet(const files::Lesson& lesson, const Options& base, bool answers, Paper paper, Worksheet& out,
                     std::string& error);
 
-// make_worksheet into `path`: a PDF if it ends in .pdf, else a PNG. False with one sentence.
+// Whether `path` names a PDF: its extension is .pdf in any case ("x.PDF", "x.Pdf").
+bool names_pdf(const std::string& path);
+
+// make_worksheet into `path`: a PDF if names_pdf(path), else a PNG. False with one sentence.
 bool write_worksheet(const files::Lesson& lesson, const Options& base, const std::string& path, bool answers,
                      Paper paper, std::string& error);
 

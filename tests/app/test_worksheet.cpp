@@ -242,6 +242,22 @@ TEST(Worksheet, ThePdfIsWhatPopplerReads) {
     }
 }
 
+// A name ending .pdf in any case is a PDF (the command line checks it as one, and so it is written).
+TEST(Worksheet, APdfIsNamedInAnyCase) {
+    files::Lesson lesson;
+    ASSERT_TRUE(files::builtin_lesson("game", lesson));
+    const std::string path = ::testing::TempDir() + "sheet.Pdf";
+    std::string error;
+    ASSERT_TRUE(app::write_worksheet(lesson, app::defaults(app::Command::run), path, false, app::Paper::a4, error)) << error;
+    std::ifstream in(path, std::ios::binary);
+    std::string head(5, '\0');
+    in.read(head.data(), 5);
+    EXPECT_EQ(head, "%PDF-");
+    EXPECT_TRUE(app::names_pdf("x.PDF"));
+    EXPECT_FALSE(app::names_pdf("x.png"));
+    EXPECT_FALSE(app::names_pdf("pdf"));
+}
+
 // The PNG is the pages one below the other; a folder that is not there is made.
 TEST(Worksheet, ThePngIsThePagesOneBelowTheOther) {
     files::Lesson lesson;
