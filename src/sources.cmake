@@ -10,6 +10,6 @@ file(GLOB noneuclid_lang_sources RELATIVE ${CMAKE_CURRENT_LIST_DIR} CONFIGURE_DE
 list(SORT noneuclid_lang_sources)
 # The rasteriser's part that needs no threads (the firmware's), then the rest.
 set(noneuclid_render_core_sources render/raster.cpp render/backdrop.cpp render/fill_rows.cpp render/texture.cpp
-    render/hud.cpp render/palette.cpp render/font.cpp render/font_builtin.cpp)
+    render/hud.cpp render/layout.cpp render/palette.cpp render/font.cpp render/font_builtin.cpp)
 set(noneuclid_render_sources ${noneuclid_render_core_sources} render/parallel_frame.cpp render/worker_pool.cpp
     render/measure_panel.cpp)

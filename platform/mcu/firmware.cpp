@@ -15,6 +15,7 @@
 #include "render/canvas.hpp"
 #include "render/font.hpp"
 #include "render/hud.hpp"
+#include "render/layout.hpp"
 #include "render/palette.hpp"
 #include "render/play.hpp"
 #include "kinds/kinds.hpp"
@@ -79,22 +80,24 @@ void game_events(const World& w, View& v) {
     for (int i = 0; i < g.event_count(); ++i) v.best.take(g.events()[i]);
 }
 
-// The HUD as app/session.cpp's draw_hud fills it for a recording played by render: English, the
-// built-in font, the buttons' legend, no frame rate, no instruments' panels (none is on).
-void draw_hud(const render::Canvas& c, const World& w, const View& v, const char* scene) {
+// The HUD as app/session.cpp's hud_info fills it for a recording played by render: English, the
+// built-in font, the buttons' legend (attract mode's laid out beside it), no frame rate, no
+// instruments' panels (none is on).
+render::HudInfo hud_info(const World& w, const View& v, const char* scene) {
     using lang::Text;
     const world::Scene& s = w.scene();
     const bool fire = s.game.on || !s.measures.empty();
     render::HudInfo info;
+    info.on = v.hud;
     info.K = static_cast<double>(w.K);
     info.scene = scene;
     info.projection = render::projection_words(v.draw.projection, lang::Language::en);
     info.controls = lang::text(s.zoom.on() ? Text::legend_zoom_buttons : fire ? Text::legend_buttons
                                                                               : Text::legend_buttons_no_fire,
                                lang::Language::en);
+    info.other_legend = lang::text(s.game.on ? Text::legend_attract_game : Text::legend_attract, lang::Language::en);
     info.game = render::hud_game(w, v.best);
-    const render::PaletteFrame colours = render::palette_frame(v.draw.palette);
-    render::draw_hud(c, render::builtin_font(), info, colours.text, colours.dim);
+    return info;
 }
 
 [[noreturn]] void run() {
@@ -128,11 +131,15 @@ void draw_hud(const render::Canvas& c, const World& w, const View& v, const char
 
     kinds::start_run([&] { play_due(w, o); });
     for (long f = 0;; ++f) {
+        const render::HudInfo info = hud_info(w, o, setup.scene);
+        const render::HudLayout layout = render::layout_hud(board::kWidth, board::kHeight, render::builtin_font(), info);
+        o.draw.disc = layout.disc;
+        const render::PaletteFrame colours = render::palette_frame(o.draw.palette);
         for (int y0 = 0; y0 < board::kHeight; y0 += kBandRows) {  // (each band: what the whole frame has there)
             const auto canvas = render::Canvas::band(g_pixels, board::kWidth, board::kHeight, board::kWidth * 2,
                                                      render::PixelFormat::rgb565(), y0, y0 + kBandRows);
             kind.draw(canvas, o.draw);
-            if (o.hud) draw_hud(canvas, w, o, setup.scene);
+            if (o.hud) render::draw_hud(canvas, render::builtin_font(), info, layout, colours.text, colours.dim);
             if (!board::present(g_pixels, y0, y0 + kBandRows, f)) board::finish(false, "noneuclid firmware: the display failed.");
         }
         if (f == setup.frames && !board::runs_forever()) break;

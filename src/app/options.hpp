@@ -59,6 +59,7 @@ struct Options {
     bool large_hud = false;     // the HUD's text twice as large
     int hud_scale = 0;          // the HUD's pixels per font pixel; 0: 2 on a canvas 900 tall or more, else 1
     std::string caption;        // a lesson step's caption on the HUD (app/lesson.hpp; no option sets it)
+    std::string title;          // a figure's label, top-left (app/figures.hpp; no option sets it)
     bool panels = true;         // the instruments' readings beside the disc (off: a worksheet's picture; no option)
     std::string lesson;         // run: play this lesson (a built-in's name or a file) instead of a scene
     std::string attract_lesson; // run: attract mode plays this lesson until a button is pressed

@@ -88,14 +88,14 @@ PictureResult render_figure(const Figure& f, const Options& base, const render::
         o.hud = base.hud && f.hud;
         o.projection = f.projection, o.params.centre_lat = f.centre_lat, o.params.centre_lon = f.centre_lon;
         if (!f.own_K) o.has_curvature = true, o.curvature = f.K[i];
+        char label[64];
+        figure_label(f, i, label, sizeof label);
+        o.title = label;  // (laid out with the HUD: the disc clears it)
         Picture panel;
         world::Scene scene = load_scene(o);
         if (f.no_ship) std::erase_if(scene.bodies, [](const world::SceneBody& b) { return b.controlled; });
         last = render_picture(o, scene, nullptr, font, panel);
         if (last.stopped) return last;
-        char label[64];
-        figure_label(f, i, label, sizeof label);
-        render::draw_text(panel.canvas, render::builtin_font(), 10, 10, label, {235, 235, 240}, 2);
         for (int y = 0; y < h; ++y)
             std::memcpy(out.canvas.row(y) + static_cast<std::ptrdiff_t>(i) * (w + kGap) * bpp, panel.canvas.row(y),
                         static_cast<std::size_t>(w) * static_cast<std::size_t>(bpp));

@@ -9,6 +9,7 @@
 #include "geometry/local_frame.hpp"
 #include "kinds/kinds.hpp"
 #include "render/hud.hpp"
+#include "render/layout.hpp"
 #include "render/measure_panel.hpp"
 #include "render/play.hpp"
 #include "render/worker_pool.hpp"
@@ -78,7 +79,7 @@ public:
         if (!WK::marks_in(options_.draw.projection)) return false;
         const double K = static_cast<double>(world_.K), R = static_cast<double>(world_.R);
         const geo::Projection p = options_.draw.projection;
-        const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p);
+        const geo::ScreenMap<double> m = geo::ScreenMap<double>::of(width, height, K, R, p, layout(width, height).disc);
         const geo::Unprojected<double> u = geo::unproject(K, (x - m.cx) / m.scale, (m.cy - y) / m.scale, p);
         if (!u.valid) return false;
         const geo::Polar<double> at = geo::to_polar(K, u.p);
@@ -115,35 +116,27 @@ public:
         if (layers == Layers::backdrop_and_grids) o.bodies = false;
         if (layers == Layers::grids_tinted)
             o.bodies = false, o.tint_grids = true, o.grid_tint = curvature_tint(static_cast<double>(world_.K));
+        o.disc = layout(c.width(), c.height()).disc;
         kind_.draw(c, o, backdrop, pool_);
     }
 
     void draw_hud(const render::Canvas& c) override {
+        char note[120];
+        const render::HudInfo info = hud_info(note, sizeof note);
+        const render::HudLayout l = render::layout_hud(c.width(), c.height(), font_, info);
         // The instruments' readings, with the HUD or without: they are the instruments' faces.
         int side = 0;
         for (const auto& g : world_.gauges())
-            if (g.on() && side < 2 && options_.panels)
-                render::draw_measure_panel(c, font_, render::measure_panel(g.reading(), options_.language), side++);
-        if (!options_.hud) return;
-        render::HudInfo info;
-        info.K = static_cast<double>(world_.K);
-        info.fps = options_.show_fps ? fps_ : 0;
-        info.scene = options_.scene_name.c_str();
-        info.projection = WK::view_words(options_.draw.projection, options_.language);
-        const bool attract = autopilot_.active() || replayed_attract_;
-        using lang::Text;
-        info.controls = attract ? lang::text(world_.game().on() ? Text::legend_attract_game : Text::legend_attract,
-                                             options_.language)
-                                : options_.legend.c_str();
-        info.game = render::hud_game(world_, best_);
-        char note[120];
-        if (kind_.note(note, sizeof note, options_.language)) info.note = note;
-        info.large = options_.large_hud;
-        info.scale = options_.hud_scale;
-        info.caption = options_.caption.c_str();
-        info.language = options_.language;
+            if (g.on() && side < info.panels)
+                render::draw_measure_panel(c, font_, render::measure_panel(g.reading(), options_.language), l.panel[side++],
+                                           l.panel_scale);
         const render::PaletteFrame colours = render::palette_frame(options_.draw.palette);
-        render::draw_hud(c, font_, info, colours.text, colours.dim);
+        render::draw_hud(c, font_, info, l, colours.text, colours.dim);
+    }
+
+    render::HudLayout layout(int width, int height) const override {
+        char note[120];
+        return render::layout_hud(width, height, font_, hud_info(note, sizeof note));
     }
 
     void dump(int width, int height, std::string& line) const override {
@@ -172,6 +165,31 @@ public:
 
 private:
     static constexpr int kQueue = 64;
+
+    // What the HUD shows now (`note`: room for the kind's note line).
+    render::HudInfo hud_info(char* note, std::size_t size) const {
+        using lang::Text;
+        render::HudInfo info;
+        info.on = options_.hud;
+        info.title = options_.title.c_str();
+        for (const auto& g : world_.gauges())
+            if (g.on() && options_.panels && info.panels < 2) ++info.panels;
+        info.K = static_cast<double>(world_.K);
+        info.fps = options_.show_fps ? fps_ : 0;
+        info.scene = options_.scene_name.c_str();
+        info.projection = WK::view_words(options_.draw.projection, options_.language);
+        const Text attract_words = world_.game().on() ? Text::legend_attract_game : Text::legend_attract;
+        const bool attract = autopilot_.active() || replayed_attract_;
+        info.controls = attract ? lang::text(attract_words, options_.language) : options_.legend.c_str();
+        info.other_legend = attract ? options_.legend.c_str() : lang::text(attract_words, options_.language);
+        info.game = render::hud_game(world_, best_);
+        if (kind_.note(note, size, options_.language)) info.note = note;
+        info.large = options_.large_hud;
+        info.scale = options_.hud_scale;
+        info.caption = options_.caption.c_str();
+        info.language = options_.language;
+        return info;
+    }
     OneButton one_button_;
     long fire_presses_ = 0, presses_ = 0;
 

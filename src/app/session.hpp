@@ -19,6 +19,7 @@
 #include "app/sound.hpp"
 #include "render/canvas.hpp"
 #include "render/draw_world.hpp"
+#include "render/layout.hpp"
 #include "lang/lang.hpp"
 #include "render/font.hpp"
 #include "files/dump.hpp"
@@ -35,6 +36,7 @@ struct SessionOptions {
     bool large_hud = false;       // the HUD's text twice as large
     int hud_scale = 0;            // the HUD's text size (render::HudInfo::scale; 0: by the canvas)
     std::string caption;          // a lesson step's caption on the HUD (app/lesson.hpp)
+    std::string title;            // a figure's label, top-left, with the HUD or without
     bool one_button = false;      // fire alone plays (app/one_button.hpp)
     bool show_fps = false;        // the frame rate on the HUD (wall-clock: never in a replay)
     std::string scene_name;
@@ -91,8 +93,11 @@ public:
     virtual void step() = 0;
     // The world (no HUD) in `layers`; with backdrop false, over what the canvas holds.
     virtual void draw_world(const render::Canvas& c, Layers layers = Layers::all, bool backdrop = true) = 0;
-    // The HUD, if it is on.
+    // The HUD, if it is on (and the title and the instruments' panels, with it or without).
     virtual void draw_hud(const render::Canvas& c) = 0;
+    // Where draw_hud puts its parts on a canvas of this size, and the disc draw_world leaves
+    // them (render/layout.hpp).
+    virtual render::HudLayout layout(int width, int height) const = 0;
     void draw(const render::Canvas& c) {
         draw_world(c);
         draw_hud(c);

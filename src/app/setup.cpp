@@ -166,7 +166,7 @@ SessionOptions session_options(const Options& o, const world::Scene& scene, cons
     so.hud = o.hud;
     so.large_hud = o.large_hud;
     so.hud_scale = o.hud_scale;
-    so.caption = o.caption;
+    so.caption = o.caption, so.title = o.title;
     so.panels = o.panels;
     so.one_button = o.one_button;
     so.draw.palette = o.palette;

@@ -39,8 +39,8 @@ constexpr SubPoint to_sub_q16(int32_t x_raw, int32_t y_raw) { return {x_raw >> 8
 inline constexpr SubPoint kBreak{INT32_MIN, INT32_MIN};
 
 // The screen mapping of a canvas for a world at curvature K with limit radius R, seen in
-// projection p: the shown disc (geo::shown_radius) fills the smaller side, centred, whatever the
-// projection. Centre and pixels per unit of projected radius, the limit circle's radius in px,
+// projection p: the shown disc (geo::shown_radius) fills the smaller side, or is `disc` pixels
+// across where the HUD needs room around it (render/layout.hpp), centred, whatever the projection. Centre and pixels per unit of projected radius, the limit circle's radius in px,
 // and the clip circle every drawn line keeps within (sub-pixels): the limit circle, or where the
 // sphere's antipode lies on it (geo::antipode_circle), kAntipodeMarginPx inside it, since there
 // the view turns one point into a whole circle and a point's direction is lost.
@@ -61,9 +61,10 @@ struct ScreenMap {
     // both outside lies wholly outside (a geodesic between two points of such a ball stays in it).
     bool outside_is_ball = false;
 
-    static ScreenMap of(int width, int height, T K, T R, Projection p) {
+    static ScreenMap of(int width, int height, T K, T R, Projection p, int disc = 0) {
         using std::sqrt;
-        const int side = width < height ? width : height;
+        const int smaller = width < height ? width : height;
+        const int side = disc > 0 && disc < smaller ? disc : smaller;
         ScreenMap m;
         m.cx = T(width) / T(2), m.cy = T(height) / T(2);
         const T rho = rim_rho(K, R, p);
@@ -80,9 +81,9 @@ struct ScreenMap {
     }
     // The same for a canvas (anything with width() and height()).
     template <class Canvas>
-    static ScreenMap of(const Canvas& c, T K, T R, Projection p) requires requires { c.width() + c.height(); }
+    static ScreenMap of(const Canvas& c, T K, T R, Projection p, int disc = 0) requires requires { c.width() + c.height(); }
     {
-        return of(c.width(), c.height(), K, R, p);
+        return of(c.width(), c.height(), K, R, p, disc);
     }
     // Whether a screen point lies within the clip circle.
     bool inside(SubPoint s) const {

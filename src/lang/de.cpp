@@ -44,6 +44,11 @@ extern const Entry kTexts_de[] = {
     {Text::angle_sum, "Summe"},
     {Text::label_excess, "Exz"},
     {Text::label_area, "Fl."},
+    {Text::label_ratio, "Verh."},
+    {Text::label_meet, "Schn"},
+    {Text::label_angle, "Wkl."},
+    {Text::label_gap, "Lücke"},
+    {Text::label_over, "über"},
     {Text::closes_at, "schließt bei"},
     {Text::unit_length, "LE"},  // Längeneinheit, as German schools write it
     {Text::unit_area, "FE"},    // Flächeneinheit

@@ -44,6 +44,11 @@ extern const Entry kTexts_fr[] = {
     {Text::angle_sum, "somme"},
     {Text::label_excess, "exc"},
     {Text::label_area, "aire"},
+    {Text::label_ratio, "rapp."},
+    {Text::label_meet, "int."},
+    {Text::label_angle, "angle"},
+    {Text::label_gap, "écart"},
+    {Text::label_over, "excès"},
     {Text::closes_at, "ferme à"},
     {Text::unit_length, "u"},   // unité (de longueur)
     {Text::unit_area, "u²"},

@@ -52,6 +52,11 @@
     X(angle_sum, "sum")                                                                             \
     X(label_excess, "exc")  /* a triangle's angular excess, on the panel (three or four letters) */ \
     X(label_area, "area")   /* its area */                                                      \
+    X(label_ratio, "ratio") /* the parallels' ratio of distances (five letters at most) */         \
+    X(label_meet, "meet")   /* where the parallels meet (four letters at most) */               \
+    X(label_angle, "ang")   /* a polygon's angle */                                             \
+    X(label_gap, "gap")     /* what its angles leave of 360 degrees at a vertex */              \
+    X(label_over, "over")   /* what they pass 360 degrees by */                                 \
     X(closes_at, "closes at")                                                                       \
     X(unit_length, "u")   /* the world's unit of length (K = +1: the sphere of radius 1) */         \
     X(unit_area, "u²")    /* its square */                                                          \

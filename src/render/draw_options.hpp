@@ -24,7 +24,8 @@ struct DrawOptions {
     bool bodies = true;  // draw the other bodies
     bool tint_grids = false;  // draw grid bodies in grid_tint rather than their own colour
     Rgb grid_tint{};
-    Palette palette = Palette::scene;  // the lines' colours (render/palette.hpp; the frame's: set them above)
+    Palette palette = Palette::scene;
+    int disc = 0;  // the shown disc's diameter in px (0: the canvas's smaller side; render/layout.hpp)  // the lines' colours (render/palette.hpp; the frame's: set them above)
 };
 
 }  // namespace noneuclid::render

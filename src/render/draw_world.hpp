@@ -103,7 +103,7 @@ template <class W>
 void draw_world(const Canvas& c, const W& world, const DrawOptions& o, DrawScratch<typename W::scalar, typename W::engine>& s,
                 bool backdrop = true) {
     using T = typename W::scalar;
-    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection, o.disc);
     if (s.any_detail) set_detail(m, s.detail, world.K, world.R, o.projection);
     if (backdrop) draw_backdrop(c, m, o, &s.backdrop);
     s.fill.begin_frame(c);

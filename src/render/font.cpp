@@ -264,36 +264,53 @@ int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_
     return layout(&canvas, font, x, y, text, color, scale);
 }
 
+namespace {
+// Calls line(text) for each line of `text` wrapped to `width` pixels at its separators (the
+// rule draw_wrapped and measure_wrapped share).
+template <class Line>
+void wrap_lines(const Font& font, const char* text, const char* sep, int scale, int width, Line&& line) {
+    const std::size_t sep_len = std::strlen(sep);
+    char buf[512];
+    std::size_t len = 0;
+    const char* p = text;
+    while (*p) {
+        const char* end = std::strstr(p, sep);
+        const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
+        char trial[512];
+        std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
+                      static_cast<int>(item), p);
+        if (len && text_width(font, trial, scale) > width) {  // this item starts the next line
+            line(static_cast<const char*>(buf));
+            std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
+        } else {
+            std::snprintf(buf, sizeof buf, "%s", trial);
+        }
+        len = std::strlen(buf);
+        p += item;
+        if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
+        while (*p == ' ') ++p;
+    }
+    if (len) line(static_cast<const char*>(buf));
+}
+}  // namespace
+
+Wrapped measure_wrapped(const Font& font, const char* text, const char* sep, int scale, int width) {
+    Wrapped w;
+    wrap_lines(font, text, sep, scale, width, [&](const char* l) {
+        ++w.lines;
+        w.widest = std::max(w.widest, text_width(font, l, scale));
+    });
+    return w;
+}
+
 int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale, int x,
                  int width, int line, int y, bool top) {
-    const std::size_t sep_len = std::strlen(sep);
-    int lines = 0;
-    for (int pass = 0; pass < 2; ++pass) {  // pass 0 counts the lines, pass 1 draws them
-        int at = top ? y : y - (lines - 1) * line, n = 0;
-        char buf[512];
-        std::size_t len = 0;
-        const char* p = text;
-        while (*p) {
-            const char* end = std::strstr(p, sep);
-            const std::size_t item = end ? static_cast<std::size_t>(end - p) : std::strlen(p);
-            char trial[512];
-            std::snprintf(trial, sizeof trial, "%.*s%s%.*s", static_cast<int>(len), buf, len ? sep : "",
-                          static_cast<int>(item), p);
-            if (len && text_width(font, trial, scale) > width) {  // this item starts the next line
-                if (pass == 1) draw_text(c, font, x, at, buf, color, scale);
-                at += line, ++n;
-                std::snprintf(buf, sizeof buf, "%.*s", static_cast<int>(item), p);
-            } else {
-                std::snprintf(buf, sizeof buf, "%s", trial);
-            }
-            len = std::strlen(buf);
-            p += item;
-            if (std::strncmp(p, sep, sep_len) == 0) p += sep_len;
-            while (*p == ' ') ++p;
-        }
-        if (len && pass == 1) draw_text(c, font, x, at, buf, color, scale);
-        lines = len ? n + 1 : n;
-    }
+    const int lines = measure_wrapped(font, text, sep, scale, width).lines;
+    int at = top ? y : y - (lines - 1) * line;
+    wrap_lines(font, text, sep, scale, width, [&](const char* l) {
+        draw_text(c, font, x, at, l, color, scale);
+        at += line;
+    });
     return lines;
 }
 

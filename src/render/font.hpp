@@ -68,6 +68,12 @@ int draw_text(const Canvas& canvas, const Font& font, int x, int y, std::string_
 int draw_wrapped(const Canvas& c, const Font& font, const char* text, const char* sep, Rgb color, int scale, int x,
                  int width, int line, int y, bool top);
 
+// What draw_wrapped would draw, without drawing: its lines and the width of the widest.
+struct Wrapped {
+    int lines = 0, widest = 0;
+};
+Wrapped measure_wrapped(const Font& font, const char* text, const char* sep, int scale, int width);
+
 // The width draw_text returns for the same text, without drawing.
 int text_width(const Font& font, std::string_view text, int scale = 1);
 

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <iterator>
 
+#include "render/layout.hpp"
 #include "render/raster.hpp"
 
 using noneuclid::lang::Text;
@@ -75,15 +76,21 @@ const char* projection_words(geo::Projection p, lang::Language language) {
     return lang::text_named(geo::projection_name(p), word) ? lang::text(word, language) : geo::projection_name(p);
 }
 
-void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rgb dim) {
-    const int scale = (h.scale > 0 ? h.scale : c.height() >= 900 ? 2 : 1) * (h.large ? 2 : 1);
-    const int margin = 6 * scale, line = font.height * scale + 2 * scale;
-    char text[128];
+void k_line(char* out, std::size_t size, double K, lang::Language language) {
     // (Below a thousandth, as a zoom takes it, K keeps three digits in the exponent form.)
-    std::snprintf(text, sizeof text, h.K != 0 && std::fabs(h.K) < 5e-4 ? "K = %+.2e  %s" : "K = %+.3f  %s", h.K,
-                  curvature_word(h.K, h.language));
-    draw_text(c, font, margin, margin, text, color, scale);
-    int y = margin + line;
+    std::snprintf(out, size, K != 0 && std::fabs(K) < 5e-4 ? "K = %+.2e /%s  %s" : "K = %+.3f /%s  %s", K,
+                  lang::text(Text::unit_area, language), curvature_word(K, language));
+}
+
+void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, const HudLayout& l, Rgb color, Rgb dim) {
+    if (h.title[0]) draw_text(c, font, l.title.x, l.title.y, h.title, color, l.title_scale);
+    if (!h.on) return;
+    const int scale = l.scale, margin = l.margin, line = l.line;
+    char text[128];
+    k_line(text, sizeof text, h.K, h.language);
+    int y = l.top_left.y;
+    draw_text(c, font, margin, y, text, color, scale);
+    y += line;
     if (h.fps > 0) {
         std::snprintf(text, sizeof text, "%.1f fps", h.fps);
         draw_text(c, font, margin, y, text, dim, scale);
@@ -96,11 +103,10 @@ void draw_hud(const Canvas& c, const Font& font, const HudInfo& h, Rgb color, Rg
     }
     if (h.note[0]) draw_text(c, font, margin, y, h.note, dim, scale);
     const int bottom = c.height() - margin - font.height * scale;
-    // (A narrow canvas or a large HUD would otherwise cut the legend off.)
-    const int room = c.width() - 2 * margin;
-    const int legend = draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, room, line, bottom, false);
+    draw_wrapped(c, font, h.controls, "  ", dim, scale, margin, l.wrap, line, bottom, false);
     if (h.caption[0])
-        draw_wrapped(c, font, h.caption, " ", color, scale, margin, room, line, bottom - legend * line - line / 2, false);
+        draw_wrapped(c, font, h.caption, " ", color, scale, margin, l.wrap, line, bottom - l.legend_lines * line - line / 2,
+                     false);
     if (h.game.on) draw_game(c, font, h, scale, margin, line, color, dim);
 }
 

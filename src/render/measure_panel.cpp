@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <cstring>
 
+#include "render/layout.hpp"
+
 namespace noneuclid::render {
 
 namespace {
@@ -102,13 +104,13 @@ PanelReadings panel_readings(const world::GaugeReading& r, lang::Language langua
             add(out, "d", r.distance, 3, u);
             add(out, "s", r.length, 3, u);
             add(out, "d(s)", r.parallels.distance, 3, u);  // (apart after s)
-            add(out, "ratio", r.parallels.ratio, 3, "");
-            if (r.parallels.meet) add(out, "meet", r.parallels.meet_at, 3, u);
+            add(out, t(Text::label_ratio), r.parallels.ratio, 3, "");
+            if (r.parallels.meet) add(out, t(Text::label_meet), r.parallels.meet_at, 3, u);
             break;
         case geo::Instrument::polygon:
             add(out, "a", r.side, 3, u);
-            add(out, "ang", r.polygon.angle_deg, 1, deg);
-            add(out, r.polygon.gap_deg >= 0 ? "gap" : "over", std::fabs(r.polygon.gap_deg), 1, deg);
+            add(out, t(Text::label_angle), r.polygon.angle_deg, 1, deg);
+            add(out, t(r.polygon.gap_deg >= 0 ? Text::label_gap : Text::label_over), std::fabs(r.polygon.gap_deg), 1, deg);
             add(out, "K", r.polygon.closing_K, 3, "");  // (the K at which it closes)
             break;
     }
@@ -141,16 +143,12 @@ MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language
     return p;
 }
 
-void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color, Rgb dim) {
-    const int disc = std::min(c.width(), c.height());
-    const int room = (c.width() - disc) / 2;
-    if (room < 8 * font.width) return;  // no room beside the disc (a square picture): the dump has the numbers
-    const int scale = room >= kPanelColumns * 2 * font.width && c.height() >= 10 * 2 * font.height ? 2 : 1;
+void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, const Box& at, int scale, Rgb color,
+                        Rgb dim) {
+    if (at.empty()) return;  // no room beside the disc (render/layout.hpp)
     const int line_height = font.height * scale + scale * 2;
-    const int width = kPanelColumns * font.width * scale;
-    const int x = side == 0 ? c.width() - width - std::max(0, (room - width) / 2) : std::max(0, (room - width) / 2);
-    int y = (c.height() - p.lines * line_height) / 2;
-    for (int i = 0; i < p.lines; ++i, y += line_height) draw_text(c, font, x, y, p.text[i], i == 0 ? dim : color, scale);
+    int y = at.y + (at.h - p.lines * line_height) / 2;
+    for (int i = 0; i < p.lines; ++i, y += line_height) draw_text(c, font, at.x, y, p.text[i], i == 0 ? dim : color, scale);
 }
 
 }  // namespace noneuclid::render

@@ -42,8 +42,10 @@ PanelReadings panel_readings(const world::GaugeReading& r, lang::Language langua
 
 // The panel's lines for a reading.
 MeasurePanel measure_panel(const world::GaugeReading& r, lang::Language language = lang::Language::en);
-// Draws it on `side` 0 (right of the disc) or 1 (left).
-void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, int side, Rgb color = {255, 225, 140},
-                        Rgb dim = {170, 175, 190});
+// Draws it in the box render/layout.hpp keeps for it (HudLayout::panel), at `scale`: nothing
+// where the box is empty.
+struct Box;
+void draw_measure_panel(const Canvas& c, const Font& font, const MeasurePanel& p, const Box& at, int scale,
+                        Rgb color = {255, 225, 140}, Rgb dim = {170, 175, 190});
 
 }  // namespace noneuclid::render

@@ -303,7 +303,7 @@ void draw_world(const Canvas& c, const W& world, const DrawOptions& o, ParallelS
                 WorkerPool& pool, bool backdrop = true) {
     using T = typename W::scalar;
     using clock = std::chrono::steady_clock;
-    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection);
+    ScreenMap<T> m = ScreenMap<T>::of(c, world.K, world.R, o.projection, o.disc);
     if (s.any_detail) set_detail(m, s.detail, world.K, world.R, o.projection);
     const int threads = pool.size();
     if (threads > kMaxBandThreads || c.height() < threads) return detail::draw_unbanded(c, world, m, o, s, backdrop);

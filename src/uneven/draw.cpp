@@ -17,8 +17,8 @@ constexpr double kTwoPi = 6.283185307179586;
 constexpr int kRayMost = static_cast<int>(world::Ranges::kReach / kDrawStep) + 4;
 constexpr int kFieldBlock = 4;  // the field's curvature is computed every 4 px and interpolated
 
-geo::ScreenMap<double> chart_map(int width, int height, const World& w) {
-    return geo::ScreenMap<double>::of(width, height, w.K, w.R, geo::Projection::stereographic);
+geo::ScreenMap<double> chart_map(int width, int height, const World& w, int disc) {
+    return geo::ScreenMap<double>::of(width, height, w.K, w.R, geo::Projection::stereographic, disc);
 }
 
 // Whether a body never moves (a grid line): its outline changes only with the metric.
@@ -44,7 +44,7 @@ render::Rgb field_color(double k, render::Rgb bg) {
 }
 
 bool Drawing::Key::operator==(const Key& o) const {
-    return width == o.width && height == o.height && version == o.version && format.same_layout(o.format) &&
+    return width == o.width && height == o.height && disc == o.disc && version == o.version && format.same_layout(o.format) &&
            background == o.background && outside == o.outside && rim == o.rim && rim_line == o.rim_line &&
            shade == o.shade && antialias == o.antialias && line_width == o.line_width;
 }
@@ -81,10 +81,10 @@ void Drawing::draw(const render::Canvas& c, const World& w, const render::DrawOp
     chart_backdrop(chart, w, o);
     draw_chart(chart, w, co, false);
     Key k;
-    k.width = W, k.height = H, k.version = w.metric_version(), k.format = c.format();
+    k.width = W, k.height = H, k.disc = o.disc, k.version = w.metric_version(), k.format = c.format();
     if (!(table_key_ == k)) {
         if (fan_version_ != w.metric_version() || fan_step_ == 0) build_fan(w);
-        build_table(w, W, H);
+        build_table(w, W, H, o.disc);
         table_key_ = k;
     }
     if (backdrop) {
@@ -121,15 +121,15 @@ void Drawing::warp(const render::Canvas& c, render::Rgb outside) {
 }
 
 void Drawing::draw_chart(const render::Canvas& c, const World& w, const render::DrawOptions& o, bool backdrop) {
-    const geo::ScreenMap<double> m = chart_map(c.width(), c.height(), w);
+    const geo::ScreenMap<double> m = chart_map(c.width(), c.height(), w, o.disc);
     if (backdrop) chart_backdrop(c, w, o);
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         const Body& b = w.bodies[i];
         if (!render::body_shown(b, o)) continue;
         BodyCache& bc = bodies_[i];
-        if (!(still(b) && bc.version == w.metric_version() + 1 && bc.width == c.width() && bc.height == c.height())) {
+        if (!(still(b) && bc.version == w.metric_version() + 1 && bc.width == c.width() && bc.height == c.height() && bc.disc == o.disc)) {
             body_outline(w, i, m);
-            bc.version = w.metric_version() + 1, bc.width = c.width(), bc.height = c.height();
+            bc.version = w.metric_version() + 1, bc.width = c.width(), bc.height = c.height(), bc.disc = o.disc;
         }
         render::draw_screen_points(c, bc.points.data(), bc.count, render::body_color(b, o),
                                    render::LineStyle{o.antialias, o.line_width});
@@ -174,7 +174,7 @@ void Drawing::draw_triangles(const render::Canvas& c, const World& w, const rend
 // in field_ until the metric, the canvas or the colours change.
 void Drawing::chart_backdrop(const render::Canvas& c, const World& w, const render::DrawOptions& o) {
     Key k;
-    k.width = c.width(), k.height = c.height(), k.version = w.metric_version(), k.format = c.format();
+    k.width = c.width(), k.height = c.height(), k.disc = o.disc, k.version = w.metric_version(), k.format = c.format();
     k.background = o.background, k.outside = o.outside, k.rim = o.rim, k.rim_line = o.rim_line;
     k.shade = o.shade_outside, k.antialias = o.antialias, k.line_width = o.line_width;
     const std::size_t row_bytes = static_cast<std::size_t>(c.width()) * c.format().bytes_per_pixel();
@@ -182,7 +182,7 @@ void Drawing::chart_backdrop(const render::Canvas& c, const World& w, const rend
         for (int y = 0; y < c.height(); ++y) std::memcpy(c.row(y), field_.data() + y * row_bytes, row_bytes);
         return;
     }
-    const geo::ScreenMap<double> m = chart_map(c.width(), c.height(), w);
+    const geo::ScreenMap<double> m = chart_map(c.width(), c.height(), w, o.disc);
     render::draw_backdrop(c, m, o);
     // The curvature at every kFieldBlock-th pixel, interpolated between.
     const int gw = c.width() / kFieldBlock + 2, gh = c.height() / kFieldBlock + 2;
@@ -328,10 +328,10 @@ double Drawing::fan_reach(double a) const {
 // Each pixel of the inhabitant's view: the chart pixel it shows; -1 past where its geodesic
 // leaves the chart's limit circle (the outside's colour), itself outside the view's own circle
 // (where both views shade the same).
-void Drawing::build_table(const World& w, int width, int height) {
+void Drawing::build_table(const World& w, int width, int height, int disc) {
     const geo::ScreenMap<double> em =
-        geo::ScreenMap<double>::of(width, height, w.K, fan_reach_, geo::Projection::azimuthal_equidistant);
-    const geo::ScreenMap<double> cm = chart_map(width, height, w);
+        geo::ScreenMap<double>::of(width, height, w.K, fan_reach_, geo::Projection::azimuthal_equidistant, disc);
+    const geo::ScreenMap<double> cm = chart_map(width, height, w, disc);
     table_.resize(static_cast<std::size_t>(width) * height);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {

@@ -61,10 +61,10 @@ private:
         std::vector<geo::SubPoint> points;
         std::size_t count = 0;
         uint32_t version = 0;  // the metric's, +1 (0: none)
-        int width = 0, height = 0;
+        int width = 0, height = 0, disc = 0;
     };
     struct Key {  // what the backdrop depends on
-        int width = 0, height = 0;
+        int width = 0, height = 0, disc = 0;
         uint32_t version = 0;
         render::PixelFormat format;
         render::Rgb background, outside, rim;
@@ -78,7 +78,7 @@ private:
     void draw_triangles(const render::Canvas& c, const World& w, const render::DrawOptions& o, const geo::ScreenMap<double>& m);
     Vec2 trace(const Metric& metric, Vec2 from, double dir, double rho);
     void build_fan(const World& w);
-    void build_table(const World& w, int width, int height);
+    void build_table(const World& w, int width, int height, int disc);
     template <int B>
     void warp(const render::Canvas& c, render::Rgb outside);
 

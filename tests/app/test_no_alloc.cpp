@@ -10,6 +10,7 @@
 #include "render/draw_world.hpp"
 #include "render/parallel_frame.hpp"
 #include "render/hud.hpp"
+#include "render/layout.hpp"
 #include "render/measure_panel.hpp"
 #include "app/frame_loop.hpp"
 #include "app/memory_display.hpp"
@@ -50,7 +51,7 @@ long allocations_per_frames(const char* scene_name, render::PixelFormat f, bool 
         w.step(1.0 / 60);
         draw(c, o);
         hud.K = static_cast<double>(w.K);
-        render::draw_hud(c, render::builtin_font(), hud);
+        render::draw_hud(c, render::builtin_font(), hud, render::layout_hud(320, 240, render::builtin_font(), hud));
     }
     return test::stop_counting();
 }
@@ -106,9 +107,15 @@ long instrument_allocations() {
         if (i == 200) w.release(world::Action::curvature_down), w.press(world::Action::curvature_up);
         w.step(1.0 / 60);
         render::draw_world(c, w, {}, scratch);
+        render::HudInfo panels;
+        panels.on = false;
+        for (const auto& g : w.gauges()) panels.panels += g.on() && panels.panels < 2;
+        const render::HudLayout l = render::layout_hud(c.width(), c.height(), render::builtin_font(), panels);
         int side = 0;
         for (const auto& g : w.gauges())
-            if (g.on()) render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(g.reading()), side++);
+            if (g.on() && side < 2)
+                render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(g.reading()), l.panel[side++],
+                                           l.panel_scale);
     }
     return test::stop_counting();
 }

@@ -353,7 +353,7 @@ TEST(Session, ATapMarksTheLiveInstrumentWhereThePixelShows) {
         const geo::Polar<double> want[3] = {{0.8, 0.3}, {1.1, 2.2}, {0.5, -2.0}};
         for (const geo::Polar<double>& w : want) {
             const geo::Projected<double> pr = geo::project(-0.5, w.r, p);
-            const auto m = geo::ScreenMap<double>::of(400, 300, -0.5, scene.limit_radius, p);
+            const auto m = geo::ScreenMap<double>::of(400, 300, -0.5, scene.limit_radius, p, s->layout(400, 300).disc);
             ASSERT_TRUE(s->mark_at(m.cx + m.scale * pr.rho * std::cos(w.theta), m.cy - m.scale * pr.rho * std::sin(w.theta), 400, 300));
             s->step();
         }

@@ -12,6 +12,7 @@
 #include "render/draw_world.hpp"
 #include "render/font.hpp"
 #include "render/hud.hpp"
+#include "render/layout.hpp"
 
 namespace {
 
@@ -22,7 +23,7 @@ void hud(const render::Canvas& c, double K) {
     h.K = K, h.scene = "scene", h.projection = "equidistant";
     h.controls = "left right thrust fire: the buttons' legend, long enough to wrap over two lines";
     h.game.on = true, h.game.lives = 3, h.game.score = 120, h.game.level = 2, h.game.screen = render::HudGame::new_level;
-    render::draw_hud(c, render::builtin_font(), h);
+    render::draw_hud(c, render::builtin_font(), h, render::layout_hud(c.width(), c.height(), render::builtin_font(), h));
 }
 
 // The frames of `scene` drawn whole and in bands of `rows` rows (the last may be shorter).

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "render/layout.hpp"
 #include "render/measure_panel.hpp"
 
 namespace noneuclid {
@@ -164,8 +165,13 @@ TEST(MeasurePanel, FitsBesideTheDisc) {
     std::vector<uint32_t> pixels(w * h, 0);
     const render::Canvas c(pixels.data(), w, h, w * 4, render::PixelFormat::xrgb8888());
     const world::GaugeReading r = circle_at(0, 6);  // its longest lines
-    render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(r, lang::Language::de), 0);
-    render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(triangle_at(1), lang::Language::de), 1);
+    render::HudInfo two;
+    two.on = false, two.panels = 2;
+    const render::HudLayout l = render::layout_hud(w, h, render::builtin_font(), two);
+    ASSERT_EQ(l.disc, 480);
+    render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(r, lang::Language::de), l.panel[0], l.panel_scale);
+    render::draw_measure_panel(c, render::builtin_font(), render::measure_panel(triangle_at(1), lang::Language::de), l.panel[1],
+                               l.panel_scale);
     int left = 0, right = 0, disc = 0;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)

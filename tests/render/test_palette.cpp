@@ -15,6 +15,7 @@
 #include "render/draw_world.hpp"
 #include "render/font.hpp"
 #include "render/hud.hpp"
+#include "render/layout.hpp"
 #include "render/palette.hpp"
 #include "world/world.hpp"
 
@@ -223,7 +224,7 @@ HudExtent hud_extent(int width, int height, bool large) {
     render::HudInfo h;
     h.K = 0.5, h.scene = "kiosk", h.projection = "equidistant", h.large = large;
     h.controls = "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc";
-    render::draw_hud(c, render::builtin_font(), h);
+    render::draw_hud(c, render::builtin_font(), h, render::layout_hud(width, height, render::builtin_font(), h));
     auto lit = [&](int x, int y) { return !(c.get(x, y) == Rgb{}); };
     HudExtent e;
     int top = -1;

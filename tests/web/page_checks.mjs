@@ -252,8 +252,9 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     await sleep(1200);  // (the address is rewritten at most twice a second)
     const b = await measure(big.page);
     await big.page.close();
-    // The disc (pi 240^2 of 800x480's pixels, 47%, less its lines) is black in high contrast only.
-    expect(a.black < 0.01 && b.black > 0.4, `black pixels: ${a.black.toFixed(3)} plain, ${b.black.toFixed(3)} high-contrast`);
+    // The disc is black in high contrast only: at 800x480 with the large HUD it shrinks to clear the
+    // HUD's text (render/layout.hpp), to about 380 px across, 24% of the pixels less its lines.
+    expect(a.black < 0.01 && b.black > 0.2, `black pixels: ${a.black.toFixed(3)} plain, ${b.black.toFixed(3)} high-contrast`);
     expect(a.height > 4 && Math.abs(b.height / a.height - 2) < 0.2, `the HUD's first line: ${a.height} px plain, ${b.height} px large`);
     expect(b.link.includes('palette=high-contrast') && b.link.includes('large-hud'), `the link ${b.link} lost a setting`);
   });
