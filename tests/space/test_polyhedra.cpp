@@ -8,31 +8,20 @@
 #include <random>
 #include <vector>
 
+#include "embedding.hpp"
 #include "space/polyhedra.hpp"
 
 namespace {
 namespace polyhedra_test {
 
 using namespace noneuclid;
-using LD = long double;
-using space::Point;
-using space::V3;
+using namespace space_embedding;
 
-LD S(LD K, LD t) { return K > 0 ? std::sin(std::sqrt(K) * t) / std::sqrt(K) : K < 0 ? std::sinh(std::sqrt(-K) * t) / std::sqrt(-K) : t; }
-LD C(LD K, LD t) { return K > 0 ? std::cos(std::sqrt(K) * t) : K < 0 ? std::cosh(std::sqrt(-K) * t) : 1; }
-struct R4 {
-    LD w, x, y, z;
-};
-R4 embed(LD K, const Point<double>& p) {
-    const LD s = S(K, p.r);
-    return {C(K, p.r), s * p.u.x, s * p.u.y, s * p.u.z};
-}
 // The distance in the embedding (flat: between r u and r' u').
 LD dist(LD K, const Point<double>& p, const Point<double>& q) {
     const R4 P = embed(K, p), Q = embed(K, q);
     if (K == 0) return std::sqrt((P.x - Q.x) * (P.x - Q.x) + (P.y - Q.y) * (P.y - Q.y) + (P.z - Q.z) * (P.z - Q.z));
-    const LD c = P.w * Q.w + K * (P.x * Q.x + P.y * Q.y + P.z * Q.z);
-    return K > 0 ? std::acos(std::clamp(c, -1.0L, 1.0L)) / std::sqrt(K) : std::acosh(std::fmax(c, 1.0L)) / std::sqrt(-K);
+    return ref_distance(K, P, Q);
 }
 
 double flat_distance(const double* a, const double* b) { return std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2])); }

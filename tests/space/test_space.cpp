@@ -1,61 +1,19 @@
-// src/space against the tests' own model in long double: the 4-vector embedding
-// p = (C_K(r), S_K(r) u) with <p, q> = w w' + K x.x' (S³ in R⁴ at K > 0, the hyperboloid in
-// R^{3,1} at K < 0, each scaled by K), tangent vectors measured by g(a, b) = a_w b_w / K + a_x.b_x,
-// geodesics p(t) = C_K(t) P + S_K(t) V, and flat E³ at K = 0 with straight lines. The reference
-// uses std::cos, std::sin, std::cosh, std::sinh, std::acos and std::acosh directly: none of the
-// engine's K-continuous forms. The engine runs in double.
+// src/space against the tests' own model in long double (tests/space/embedding.hpp), and flat
+// E³ at K = 0 with straight lines. The engine runs in double.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <random>
 
+#include "embedding.hpp"
 #include "space/view.hpp"
 
 namespace {
 namespace space_test {  // (a unity batch shares this file's scope with others)
 
 using namespace noneuclid;
-using LD = long double;
-using space::Point;
-using space::V3;
-
-struct R4 {
-    LD w, x, y, z;
-};
-R4 operator+(R4 a, R4 b) { return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z}; }
-R4 operator*(LD s, R4 a) { return {s * a.w, s * a.x, s * a.y, s * a.z}; }
-
-LD S(LD K, LD t) { return K > 0 ? std::sin(std::sqrt(K) * t) / std::sqrt(K) : K < 0 ? std::sinh(std::sqrt(-K) * t) / std::sqrt(-K) : t; }
-LD C(LD K, LD t) { return K > 0 ? std::cos(std::sqrt(K) * t) : K < 0 ? std::cosh(std::sqrt(-K) * t) : 1; }
-LD form(LD K, R4 a, R4 b) { return a.w * b.w + K * (a.x * b.x + a.y * b.y + a.z * b.z); }  // points
-LD g(LD K, R4 a, R4 b) { return a.w * b.w / K + a.x * b.x + a.y * b.y + a.z * b.z; }     // tangents (K != 0)
-
-R4 embed(LD K, const Point<double>& p) {
-    const LD s = S(K, p.r);
-    return {C(K, p.r), s * p.u.x, s * p.u.y, s * p.u.z};
-}
-// The distance between two embedded points, from the form: acos or acosh of <P, Q>.
-LD ref_distance(LD K, R4 P, R4 Q) {
-    const LD c = form(K, P, Q);
-    return K > 0 ? std::acos(std::fmin(c, 1.0L)) / std::sqrt(K) : std::acosh(std::fmax(c, 1.0L)) / std::sqrt(-K);
-}
-// The carried vector v at p as a tangent of the embedding: its radial part along the radial
-// geodesic's tangent (-K S, C u), the rest as it is.
-R4 tangent(LD K, const Point<double>& p, V3<double> v) {
-    const LD a = v.x * p.u.x + v.y * p.u.y + v.z * p.u.z;
-    const R4 radial{-K * S(K, p.r), C(K, p.r) * p.u.x, C(K, p.r) * p.u.y, C(K, p.r) * p.u.z};
-    return a * radial + R4{0, v.x - a * p.u.x, v.y - a * p.u.y, v.z - a * p.u.z};
-}
-// A tangent at the embedded point Q back to a carried vector (the inverse of `tangent`).
-V3<long double> carried(LD K, R4 Q, R4 F) {
-    const LD s = std::sqrt(Q.x * Q.x + Q.y * Q.y + Q.z * Q.z), c = Q.w;
-    const LD ux = Q.x / s, uy = Q.y / s, uz = Q.z / s;
-    const R4 radial{-K * s, c * ux, c * uy, c * uz};
-    const LD a = g(K, F, radial);
-    return {a * ux + (F.x - a * c * ux), a * uy + (F.y - a * c * uy), a * uz + (F.z - a * c * uz)};
-}
-LD gap(V3<long double> a, V3<double> b) { return std::hypot(a.x - b.x, std::hypot(a.y - b.y, a.z - b.z)); }
+using namespace space_embedding;
 
 // Random points within `reach` of O and random unit vectors, the same each run.
 struct Draw {

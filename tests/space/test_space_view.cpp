@@ -12,43 +12,17 @@
 #include <random>
 #include <vector>
 
+#include "embedding.hpp"
 #include "space/draw.hpp"
 
 namespace {
 namespace space_view_test {
 
 using namespace noneuclid;
-using LD = long double;
-using space::Point;
-using space::V3;
+using namespace space_embedding;
 
-LD S(LD K, LD t) { return K > 0 ? std::sin(std::sqrt(K) * t) / std::sqrt(K) : K < 0 ? std::sinh(std::sqrt(-K) * t) / std::sqrt(-K) : t; }
-LD C(LD K, LD t) { return K > 0 ? std::cos(std::sqrt(K) * t) : K < 0 ? std::cosh(std::sqrt(-K) * t) : 1; }
-
-struct R4 {
-    LD w, x, y, z;
-};
-R4 operator+(R4 a, R4 b) { return {a.w + b.w, a.x + b.x, a.y + b.y, a.z + b.z}; }
-R4 operator-(R4 a, R4 b) { return {a.w - b.w, a.x - b.x, a.y - b.y, a.z - b.z}; }
-R4 operator*(LD s, R4 a) { return {s * a.w, s * a.x, s * a.y, s * a.z}; }
-LD form(LD K, R4 a, R4 b) { return a.w * b.w + K * (a.x * b.x + a.y * b.y + a.z * b.z); }
-LD g(LD K, R4 a, R4 b) { return a.w * b.w / K + a.x * b.x + a.y * b.y + a.z * b.z; }
-R4 embed(LD K, const Point<double>& p) {
-    const LD s = S(K, p.r);
-    return {C(K, p.r), s * p.u.x, s * p.u.y, s * p.u.z};
-}
-LD distance(LD K, R4 P, R4 Q) {
-    const LD c = form(K, P, Q);
-    return K > 0 ? std::acos(std::clamp(c, -1.0L, 1.0L)) / std::sqrt(K) : std::acosh(std::fmax(c, 1.0L)) / std::sqrt(-K);
-}
-// The carried vector at Q of a tangent F there (as tests/space/test_space.cpp's `carried`).
-V3<LD> carried(LD K, R4 Q, R4 F) {
-    const LD s = std::sqrt(Q.x * Q.x + Q.y * Q.y + Q.z * Q.z), c = Q.w;
-    const LD ux = Q.x / s, uy = Q.y / s, uz = Q.z / s;
-    const R4 radial{-K * s, c * ux, c * uy, c * uz};
-    const LD a = g(K, F, radial);
-    return {a * ux + (F.x - a * c * ux), a * uy + (F.y - a * c * uy), a * uz + (F.z - a * c * uz)};
-}
+// (The embedding's distance, under the name this file uses.)
+LD distance(LD K, R4 P, R4 Q) { return ref_distance(K, P, Q); }
 LD dotl(V3<LD> a, V3<double> b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
 // A point of the geodesic from p to q, a fraction t of the way, in the embedding (K != 0), and

@@ -1,0 +1,133 @@
+// The three-dimensional world's state and its step (docs/space.md): bodies (the Platonic solids
+// of space/polyhedra.hpp, and the ship) with a position, a frame carried by parallel transport,
+// a speed along the frame's forward and a spin, in a space of curvature K that the curvature
+// actions turn while they move, as the 2D world does:
+//  1. the ship: thrust speeds it up along its forward, left and right turn it about its up (yaw);
+//  2. every body flies speed * dt along its forward (space::fly: its frame carried);
+//  3. its spin turns its frame about its axis (in the frame's own coordinates);
+//  4. the limit sphere: a centre past R reappears at (2R - r, -u), its frame unchanged in the
+//     carried coordinates. At K > 0 with R = pi / sqrt K that is exactly the geodesic going on
+//     through the antipode (tested against the embedding).
+// Changing K leaves every body's (r, u) and frame as they are (the paper's rule); held curvature
+// up and down change K by `curvature_rate` a second within [-1, 1]; the presets set K = -1, 0, 1;
+// reset restores the start. At K > 0 the limit distance in force is min(R, pi / sqrt K). Nothing
+// reads a clock or a random number: the same actions give the same world, bit for bit.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "space/polyhedra.hpp"
+#include "world/action.hpp"
+
+namespace noneuclid::space {
+
+template <class T>
+struct Body {
+    int solid = 0;  // its shape: kSolids[solid]
+    T size{};       // its circumradius
+    Point<T> at;
+    Frame<T> frame;
+    T speed{};                           // along frame.forward, units a second
+    V3<T> spin_axis{T(0), T(0), T(1)};   // in the frame's own coordinates (forward, left, up)
+    T spin{};                            // radians a second, right-handed about the axis
+    uint8_t color[3] = {220, 225, 235};
+    bool ship = false;                   // the body the ship's actions steer (the first one)
+};
+
+// A world's start: its bodies and its constants.
+template <class T>
+struct Start {
+    T K{}, R = T(3);                         // the curvature and the limit distance
+    double curvature_rate = 0.5;             // K a second while a curvature action is held
+    double thrust = 0.6, turn_rate = 1.8;    // the ship's: units a second squared, radians a second
+    double max_speed = 1.5;
+    std::vector<Body<T>> bodies;
+};
+
+template <class T>
+class World {
+public:
+    using scalar = T;
+
+    explicit World(const Start<T>& start) : start_(start) { reset(); }
+
+    T K{}, R{};
+    double time = 0;
+    long frame = 0;
+    std::vector<Body<T>> bodies;
+
+    const Start<T>& start() const { return start_; }
+    // The limit distance in force: R, or at K > 0 the antipode if nearer.
+    T limit() const {
+        using std::sqrt;
+        if (!(K > T(0))) return R;
+        const T antipode = geo::pi_v<T> / sqrt(K);
+        return antipode < R ? antipode : R;
+    }
+
+    bool held(world::Action a) const { return held_[static_cast<int>(a)]; }
+    void press(world::Action a) {
+        using world::Action;
+        held_[static_cast<int>(a)] = true;
+        switch (a) {
+            case Action::hyperbolic: K = T(-1); break;
+            case Action::flat: K = T(0); break;
+            case Action::spherical: K = T(1); break;
+            case Action::preset: K = K < T(-0.5) ? T(0) : K < T(0.5) ? T(1) : T(-1); break;  // -1, 0, 1 in turn
+            case Action::reset: reset(); break;
+            default: break;
+        }
+    }
+    void release(world::Action a) { held_[static_cast<int>(a)] = false; }
+
+    void reset() {
+        K = start_.K, R = start_.R, time = 0, frame = 0, bodies = start_.bodies;
+        for (bool& h : held_) h = false;
+    }
+
+    void step(double dt) {
+        using world::Action;
+        const double dk = (held(Action::curvature_up) ? 1 : 0) - (held(Action::curvature_down) ? 1 : 0);
+        if (dk != 0) {
+            const double k = static_cast<double>(K) + dk * start_.curvature_rate * dt;
+            K = T(k < -1 ? -1 : (k > 1 ? 1 : k));
+        }
+        for (Body<T>& b : bodies) {
+            if (b.ship) steer(b, dt);
+            if (b.speed != T(0)) fly(K, b.at, b.frame, b.speed * T(dt));
+            if (b.spin != T(0)) spin(b, T(dt));
+            settle(b);
+        }
+        time += dt, ++frame;
+    }
+
+private:
+    void steer(Body<T>& b, double dt) {
+        using world::Action;
+        if (held(Action::thrust)) {
+            const double v = static_cast<double>(b.speed) + start_.thrust * dt;
+            b.speed = T(v < start_.max_speed ? v : start_.max_speed);
+        }
+        const double turn = ((held(Action::left) ? 1 : 0) - (held(Action::right) ? 1 : 0)) * start_.turn_rate * dt;
+        if (turn != 0) {  // yaw: about up, left turning forward toward -right
+            b.frame.forward = turned(b.frame.forward, b.frame.up, T(turn));
+            b.frame.right = turned(b.frame.right, b.frame.up, T(turn));
+        }
+    }
+    void spin(Body<T>& b, T dt) {
+        const V3<T> axis = unit(b.spin_axis.x * b.frame.forward + b.spin_axis.z * b.frame.up - b.spin_axis.y * b.frame.right);
+        const T angle = b.spin * dt;
+        b.frame = orthonormal(Frame<T>{turned(b.frame.forward, axis, angle), turned(b.frame.up, axis, angle),
+                                       turned(b.frame.right, axis, angle)});
+    }
+    void settle(Body<T>& b) const {
+        const T R = limit();
+        if (b.at.r > R) b.at = {T(2) * R - b.at.r, T(-1) * b.at.u};
+    }
+
+    Start<T> start_;
+    bool held_[world::kActionCount] = {};
+};
+
+}  // namespace noneuclid::space
