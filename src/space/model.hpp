@@ -49,8 +49,8 @@ V3<T> unit(V3<T> a, V3<T> fallback = {T(1), T(0), T(0)}) {
 // A unit vector at right angles to the unit vector u (any one; the same one for the same u).
 template <class T>
 V3<T> some_normal(V3<T> u) {
-    using std::fabs;
-    const V3<T> axis = fabs(u.x) < T(0.6) ? V3<T>{T(1), T(0), T(0)} : V3<T>{T(0), T(1), T(0)};
+    const T ax = u.x < T(0) ? -u.x : u.x;  // (|u.x| for every scalar: fixed point has no fabs)
+    const V3<T> axis = ax < T(0.6) ? V3<T>{T(1), T(0), T(0)} : V3<T>{T(0), T(1), T(0)};
     return unit(axis - dot(axis, u) * u);
 }
 
