@@ -252,17 +252,13 @@ private:
     PilotView pilot_view() const {
         PilotView v;
         v.K = static_cast<double>(world_.K);
-        for (const auto& b : world_.bodies)
-            if (b.desc->controlled && b.active) {
-                v.ship_speed = static_cast<double>(b.speed);
-                break;
-            }
+        WK::ship_speed(world_, v.ship_speed);
         v.measuring = world_.measuring();
         const auto& g = world_.game();
         v.game = g.on();
         if (v.game) {
             v.ready = g.phase == world::GamePhase::ready;
-            v.target = g.aim(world_, v.aim, v.distance);
+            v.target = WK::aim(world_, v.aim, v.distance);
             v.range = world_.scene().game.bullet_range;
         }
         return v;
@@ -295,11 +291,8 @@ private:
             }
         if (g.next_shot() > next_shot && !started) sound_.add(Cue::fire);
         // The hum is the ship's engine: none while there is no ship (the "press fire" screen).
-        for (const auto& b : world_.bodies)
-            if (b.desc->controlled && b.active) {
-                sound_.thrust = world_.held(world::Action::thrust);
-                break;
-            }
+        double speed = 0;
+        if (WK::ship_speed(world_, speed)) sound_.thrust = world_.held(world::Action::thrust);
     }
 
     WK kind_;

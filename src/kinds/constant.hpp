@@ -74,6 +74,9 @@ public:
 
     static lang::Text legend(bool keys, const world::Scene& s) { return constant_legend(keys, s); }
 
+    static bool ship_speed(const World& w, double& speed) { return plane_ship_speed(w, speed); }
+    static bool aim(const World& w, double& turn, double& distance) { return plane_aim(w, turn, distance); }
+
     void dump(const files::DumpOptions& o, std::string& line) const { files::dump_frame(world, o, line); }
 
 private:

@@ -21,7 +21,9 @@
 //  - note(out, size, language): the HUD's extra line (the zoom's reach, the bumps' gain), false
 //    for none;
 //  - legend(keys, scene): the HUD's controls line for a keyboard (keys) or the kiosk's buttons;
-//  - dump(options, line): one JSON Lines frame of `noneuclid dump` (docs/file-formats.md).
+//  - dump(options, line): one JSON Lines frame of `noneuclid dump` (docs/file-formats.md);
+//  - ship_speed(world, speed): whether a ship flies (the autopilot's and the engine hum's), and its
+//    speed; aim(world, turn, distance): the game's target from the ship's nose, false for none.
 // Recording needs nothing of a kind: the session records the actions it applies, with the world's
 // time, and a replay applies them at the same times, so the same kind replays bit for bit.
 #pragma once
@@ -29,6 +31,7 @@
 #include <concepts>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 #include "files/dump.hpp"
 #include "geometry/geometry.hpp"
@@ -68,7 +71,8 @@ concept World = requires(W& w, const W& cw, world::Action a, double dt, geo::Pol
 template <class K>
 concept WorldKind = requires(K& k, const K& ck, const render::Canvas& c, const render::DrawOptions& o, bool backdrop,
                              render::WorkerPool& pool, geo::Projection p, lang::Language l, char* out, std::size_t size,
-                             const files::DumpOptions& d, std::string& line, const world::Scene& scene) {
+                             const files::DumpOptions& d, std::string& line, const world::Scene& scene,
+                             double& speed) {
     typename K::World;
     requires World<typename K::World>;
     requires std::constructible_from<K, const world::Scene&>;
@@ -81,6 +85,24 @@ concept WorldKind = requires(K& k, const K& ck, const render::Canvas& c, const r
     { ck.note(out, size, l) } -> std::same_as<bool>;
     { K::legend(backdrop, scene) } -> std::same_as<lang::Text>;
     ck.dump(d, line);
+    { K::ship_speed(std::as_const(k.world), speed) } -> std::same_as<bool>;
+    { K::aim(std::as_const(k.world), speed, speed) } -> std::same_as<bool>;
 };
+
+// ship_speed and aim for a world of the plane's bodies and game (the worlds of constant and of
+// uneven curvature): its controlled body that is active, and world::Game::aim.
+template <class W>
+bool plane_ship_speed(const W& w, double& speed) {
+    for (const auto& b : w.bodies)
+        if (b.desc->controlled && b.active) {
+            speed = static_cast<double>(b.speed);
+            return true;
+        }
+    return false;
+}
+template <class W>
+bool plane_aim(const W& w, double& turn, double& distance) {
+    return w.game().on() && w.game().aim(w, turn, distance);
+}
 
 }  // namespace noneuclid::kinds

@@ -45,6 +45,9 @@ public:
         return s.game.on ? lang::Text::legend_uneven_game_keys : lang::Text::legend_uneven_keys;
     }
 
+    static bool ship_speed(const World& w, double& speed) { return plane_ship_speed(w, speed); }
+    static bool aim(const World& w, double& turn, double& distance) { return plane_aim(w, turn, distance); }
+
     void dump(const files::DumpOptions& o, std::string& line) const { files::dump_frame(world, o, line); }
 
 private:
