@@ -66,13 +66,23 @@ Frame<T> orthonormal(const Frame<T>& f) {
     return o;
 }
 
-// A body's position and frame after moving distance s along its forward direction: the frame
-// carried (its forward stays the direction of travel).
+// A body's position, direction of travel and frame after moving distance s along the travel:
+// both carried (the travel stays the geodesic's tangent; the frame keeps its angles to it).
+template <class T>
+void fly(T K, Point<T>& p, V3<T>& travel, Frame<T>& f, T s) {
+    const Walk<T> w = walk(K, p, travel, s);
+    p = w.end;
+    travel = unit(w.heading, travel);
+    f = orthonormal(Frame<T>{carry(w, f.forward), carry(w, f.up), carry(w, f.right)});
+}
+
+// The same for a body that travels where it faces (the frame's forward is the travel).
 template <class T>
 void fly(T K, Point<T>& p, Frame<T>& f, T s) {
-    const Walk<T> w = walk(K, p, f.forward, s);
-    p = w.end;
-    f = orthonormal(Frame<T>{w.heading, carry(w, f.up), carry(w, f.right)});
+    V3<T> travel = f.forward;
+    fly(K, p, travel, f, s);
+    f.forward = travel;
+    f = orthonormal(f);
 }
 
 }  // namespace noneuclid::space

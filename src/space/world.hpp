@@ -1,9 +1,12 @@
 // The three-dimensional world's state and its step (docs/space.md): bodies (the Platonic solids
 // of space/polyhedra.hpp, and the ship) with a position, a frame carried by parallel transport,
-// a speed along the frame's forward and a spin, in a space of curvature K that the curvature
-// actions turn while they move, as the 2D world does:
-//  1. the ship: thrust speeds it up along its forward, left and right turn it about its up (yaw);
-//  2. every body flies speed * dt along its forward (space::fly: its frame carried);
+// a velocity (a speed along a carried direction of travel) and a spin, in a space of curvature K
+// that the curvature actions turn while they move, as the 2D world does:
+//  1. the ship: thrust adds thrust * dt along its forward to its velocity (as vectors at the
+//     ship, the 2D rule), left and right turn its frame about its up (yaw), pitch up and down
+//     about its right (up: forward toward up), roll left and right about its forward;
+//  2. every body flies speed * dt along its travel (space::fly: the travel and the frame carried,
+//     so a spinning body still coasts along one geodesic);
 //  3. its spin turns its frame about its axis (in the frame's own coordinates);
 //  4. the limit sphere: a centre past R reappears at (2R - r, -u), its frame unchanged in the
 //     carried coordinates. At K > 0 with R = pi / sqrt K that is exactly the geodesic going on
@@ -28,7 +31,8 @@ struct Body {
     T size{};       // its circumradius
     Point<T> at;
     Frame<T> frame;
-    T speed{};                           // along frame.forward, units a second
+    V3<T> travel{T(1), T(0), T(0)};      // the direction of travel, a carried unit vector
+    T speed{};                           // along travel, units a second
     V3<T> spin_axis{T(0), T(0), T(1)};   // in the frame's own coordinates (forward, left, up)
     T spin{};                            // radians a second, right-handed about the axis
     uint8_t color[3] = {220, 225, 235};
@@ -95,7 +99,7 @@ public:
         }
         for (Body<T>& b : bodies) {
             if (b.ship) steer(b, dt);
-            if (b.speed != T(0)) fly(K, b.at, b.frame, b.speed * T(dt));
+            if (b.speed != T(0)) fly(K, b.at, b.travel, b.frame, b.speed * T(dt));
             if (b.spin != T(0)) spin(b, T(dt));
             settle(b);
         }
@@ -105,15 +109,22 @@ public:
 private:
     void steer(Body<T>& b, double dt) {
         using world::Action;
-        if (held(Action::thrust)) {
-            const double v = static_cast<double>(b.speed) + start_.thrust * dt;
-            b.speed = T(v < start_.max_speed ? v : start_.max_speed);
+        if (held(Action::thrust)) {  // velocity += thrust dt along forward, at most max_speed
+            const V3<T> v = b.speed * b.travel + T(start_.thrust * dt) * b.frame.forward;
+            const T speed = norm(v);
+            b.travel = unit(v, b.frame.forward);
+            b.speed = speed < T(start_.max_speed) ? speed : T(start_.max_speed);
         }
-        const double turn = ((held(Action::left) ? 1 : 0) - (held(Action::right) ? 1 : 0)) * start_.turn_rate * dt;
-        if (turn != 0) {  // yaw: about up, left turning forward toward -right
-            b.frame.forward = turned(b.frame.forward, b.frame.up, T(turn));
-            b.frame.right = turned(b.frame.right, b.frame.up, T(turn));
-        }
+        const auto rate = [&](Action more, Action less) {
+            return ((held(more) ? 1 : 0) - (held(less) ? 1 : 0)) * start_.turn_rate * dt;
+        };
+        const double yaw = rate(Action::left, Action::right), pitch = rate(Action::pitch_up, Action::pitch_down),
+                     roll = rate(Action::roll_right, Action::roll_left);
+        Frame<T>& f = b.frame;
+        if (yaw != 0) f.forward = turned(f.forward, f.up, T(yaw)), f.right = turned(f.right, f.up, T(yaw));
+        if (pitch != 0) f.forward = turned(f.forward, f.right, T(pitch)), f.up = turned(f.up, f.right, T(pitch));
+        if (roll != 0) f.up = turned(f.up, f.forward, T(roll)), f.right = turned(f.right, f.forward, T(roll));
+        if (yaw != 0 || pitch != 0 || roll != 0) f = orthonormal(f);
     }
     void spin(Body<T>& b, T dt) {
         const V3<T> axis = unit(b.spin_axis.x * b.frame.forward + b.spin_axis.z * b.frame.up - b.spin_axis.y * b.frame.right);

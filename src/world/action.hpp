@@ -22,6 +22,7 @@ namespace noneuclid::world {
 enum class Action : uint8_t {
     thrust, left, right, curvature_up, curvature_down, preset, reset, hyperbolic, flat, spherical,
     fire, instrument, strength_up, strength_down,
+    pitch_up, pitch_down, roll_left, roll_right,  // the 3D world's ship (src/space)
     projection, hud, quit, mute,  // the display's: next projection, HUD on/off, leave, sound off/on
 };
 
@@ -51,13 +52,17 @@ inline constexpr ActionRow kActions[] = {
     {"instrument", true, true, "m M", 0},
     {"strength_up", false, true, ". >", 0},
     {"strength_down", false, true, ", <", 0},
+    {"pitch_up", false, true, "i I Prior", 104},     // KEY_PAGEUP
+    {"pitch_down", false, true, "k K Next", 109},    // KEY_PAGEDOWN
+    {"roll_left", false, true, "q Q", 16},           // KEY_Q
+    {"roll_right", false, true, "e E", 18},          // KEY_E
     {"projection", true, false, "p P", 25},  // KEY_P
     {"hud", true, false, "h H", 35},         // KEY_H
     {"quit", true, false, "Escape", 1},      // KEY_ESC
     {"mute", true, false, "n N", 0},
 };
 inline constexpr int kActionCount = sizeof kActions / sizeof kActions[0];
-inline constexpr int kWorldActionCount = 14;
+inline constexpr int kWorldActionCount = 18;
 static_assert(static_cast<int>(Action::mute) + 1 == kActionCount, "an action without its row");
 static_assert(kActions[kWorldActionCount - 1].world && !kActions[kWorldActionCount].world, "the world's actions first");
 

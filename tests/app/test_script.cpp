@@ -110,9 +110,9 @@ TEST(Script, FileContentInMessagesIsQuoted) {
     const std::string mib(1 << 20, 'w');
     const Case cases[] = {
         {"1 press \x1b[2Jwarp\n", "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, fire, instrument, strength_up, strength_down, projection, hud, mute), found '\\x1b[2Jwarp'"},
+                                  "hyperbolic, flat, spherical, fire, instrument, strength_up, strength_down, pitch_up, pitch_down, roll_left, roll_right, projection, hud, mute), found '\\x1b[2Jwarp'"},
         {"1 press w\0arp now\n"s, "expected a control (thrust, left, right, curvature_up, curvature_down, preset, reset, "
-                                  "hyperbolic, flat, spherical, fire, instrument, strength_up, strength_down, projection, hud, mute), found 'w\\x00arp'"},
+                                  "hyperbolic, flat, spherical, fire, instrument, strength_up, strength_down, pitch_up, pitch_down, roll_left, roll_right, projection, hud, mute), found 'w\\x00arp'"},
         {"1 \x9b\xff thrust\n", "expected press, release, tap, mark or attract after the time, found '\\x9b\\xff'"},
         {"1 attract \xc2\x9b" "31m\n", "expected on or off after 'attract', found '\\u009b31m'"},
         {"1 press thrust \x1b\n", "unexpected '\\x1b' after 'thrust'"},

@@ -26,7 +26,7 @@ space::World<double> coasting(double K, double R, const Point<double>& p, const 
     space::Start<double> s;
     s.K = K, s.R = R;
     space::Body<double> b;
-    b.at = p, b.frame = f, b.speed = speed;
+    b.at = p, b.frame = f, b.travel = f.forward, b.speed = speed;
     s.bodies.push_back(b);
     return space::World<double>(s);
 }
@@ -114,6 +114,88 @@ TEST(SpaceWorld, ASpinTurnsTheFrameRoundOnce) {
     const double over = 0.5 * std::fabs(frames * kDt - 4 * 3.14159265358979323846);
     EXPECT_LT(space::norm(w.bodies[0].frame.forward - b.frame.forward), over + 1e-9);
     EXPECT_LT(space::norm(w.bodies[0].frame.up - b.frame.up), over + 1e-9);
+}
+
+// A body that spins while it coasts: its travel and its frame are carried apart, so it still
+// keeps to one geodesic, and its frame is the start's turned by spin * t about its own axis and
+// carried along (in the embedding: the part across the geodesic's 2-plane kept, the part along
+// the tangent following the tangent), after 10^4 frames.
+TEST(SpaceWorld, ASpinningBodyStillCoastsAlongItsGeodesic) {
+    std::mt19937_64 rng(11);
+    for (const double K : {-1.0, 0.0, 1.0}) {
+        const Point<double> p{0.5, space::unit(V3<double>{-1, 0.5, 2})};
+        const space::Frame<double> f = random_frame(rng);
+        space::Start<double> s;
+        s.K = K, s.R = K > 0 ? 3.14159265358979323846 / std::sqrt(K) : 100;
+        space::Body<double> b;
+        b.at = p, b.frame = f, b.speed = K < 0 ? 0.012 : 0.2;
+        b.travel = space::unit(V3<double>{0.3, -1, 0.4}), b.spin = 0.7, b.spin_axis = space::unit(V3<double>{1, -2, 0.5});
+        s.bodies.push_back(b);
+        space::World<double> w(s);
+        for (int i = 0; i < 10000; ++i) w.step(kDt);
+        const space::Body<double>& e = w.bodies[0];
+        const LD t = 10000 * kDt, dist = b.speed * t;
+        if (K == 0) {  // straight, and the frame turned only
+            const V3<double> want = space::map_position(p) + static_cast<double>(dist) * b.travel;
+            EXPECT_LT(space::norm(space::map_position(e.at) - want), 1e-7);
+            continue;
+        }
+        const R4 P = embed(K, p), V = tangent(K, p, b.travel);
+        const R4 at = C(K, dist) * P + S(K, dist) * V, along = (-K * S(K, dist)) * P + C(K, dist) * V;
+        EXPECT_LT(near_distance(K, at, embed(K, e.at)), 1e-8) << "K = " << K;
+        EXPECT_LT(gap(carried(K, embed(K, e.at), along), e.travel), 1e-8) << "K = " << K;
+        // The frame: the spin's rotation (about the body's axis, in the start's carried
+        // coordinates), then carried.
+        const V3<double> axis = space::unit(b.spin_axis.x * f.forward + b.spin_axis.z * f.up - b.spin_axis.y * f.right);
+        const double turn = static_cast<double>(0.7L * t);
+        for (int k = 0; k < 2; ++k) {
+            const V3<double> v0 = space::turned(k ? f.up : f.forward, axis, turn);
+            const R4 X = tangent(K, p, v0);
+            const LD a = g(K, X, V);
+            const R4 moved = (X - a * V) + a * along;
+            EXPECT_LT(gap(carried(K, embed(K, e.at), moved), k ? e.frame.up : e.frame.forward), 1e-7) << "K = " << K;
+        }
+    }
+}
+
+// The ship's turns, each about one of its own axes by turn_rate a second: yaw left turns forward
+// toward its left (-right), pitch up toward its up, roll right tips its up toward its right;
+// held together, the frame stays orthonormal. Turning leaves the velocity as it was (the 2D rule).
+TEST(SpaceWorld, TheShipYawsPitchesAndRollsAboutItsOwnAxes) {
+    using world::Action;
+    struct Turn {
+        Action action;
+        V3<double> forward, up;  // after a quarter turn from forward x, up z
+    };
+    const Turn turns[] = {{Action::left, {0, 1, 0}, {0, 0, 1}},   {Action::right, {0, -1, 0}, {0, 0, 1}},
+                          {Action::pitch_up, {0, 0, 1}, {-1, 0, 0}}, {Action::pitch_down, {0, 0, -1}, {1, 0, 0}},
+                          {Action::roll_right, {1, 0, 0}, {0, -1, 0}}, {Action::roll_left, {1, 0, 0}, {0, 1, 0}}};
+    for (const Turn& t : turns) {
+        space::Start<double> s;
+        s.turn_rate = 3.14159265358979323846 / 2 / (90 * kDt);  // a quarter turn in 90 frames
+        space::Body<double> ship;
+        ship.ship = true, ship.speed = 0.1, ship.at = {0.5, {0, 1, 0}};
+        s.bodies.push_back(ship);
+        space::World<double> w(s);
+        w.press(t.action);
+        for (int i = 0; i < 90; ++i) w.step(kDt);
+        const space::Body<double>& b = w.bodies[0];
+        EXPECT_LT(space::norm(b.frame.forward - t.forward), 1e-12) << world::action_name(t.action);
+        EXPECT_LT(space::norm(b.frame.up - t.up), 1e-12) << world::action_name(t.action);
+        EXPECT_LT(space::norm(b.travel - V3<double>{1, 0, 0}), 1e-9) << world::action_name(t.action);  // (flat K: kept)
+    }
+    space::Start<double> s;
+    space::Body<double> ship;
+    ship.ship = true;
+    s.bodies.push_back(ship);
+    space::World<double> w(s);
+    for (Action a : {Action::left, Action::pitch_up, Action::roll_right, Action::thrust}) w.press(a);
+    for (int i = 0; i < 6000; ++i) w.step(kDt);
+    const space::Frame<double>& f = w.bodies[0].frame;
+    EXPECT_NEAR(space::norm(f.forward), 1, 1e-12);
+    EXPECT_NEAR(space::dot(f.forward, f.up), 0, 1e-12);
+    EXPECT_LT(space::norm(space::cross(f.forward, f.up) - f.right), 1e-12);
+    EXPECT_NEAR(w.bodies[0].speed, s.max_speed, 1e-12);  // thrust stops at the top speed
 }
 
 // The curvature keys turn K at the scene's rate within [-1, 1], the presets set it, reset restores
