@@ -28,6 +28,9 @@
 #                and its inhabitant's view at 0; uneven-gravity.png the game around a mass
 #                (game.actions), chart view, 800x480; uneven-triangle.png a triangle's reading about a
 #                mass (tests/files/data/bumps.toml), chart view, 800x480
+# space.png, space-map.png  the space scene after 1 s in the inhabitant's view and in the map at
+#                K = -1, 0 and +1, 400x400 each (docs/space.md); honeycombs.png the order-5 cubic
+#                honeycomb at K = -1 (it fits) and -0.7, the 8-cell at K = +0.6, 400x400 each
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 nc=${1:-build/release/noneuclid}
@@ -150,3 +153,15 @@ python3 "$tmp/join.py" "$tmp/h1.png" "$tmp/h2.png" "$tmp/h3.png" docs/images/une
 sed 's/^scene .*/scene gravity/' docs/images/game.actions > "$tmp/gravity.actions"
 "$nc" render --actions "$tmp/gravity.actions" --frames 570 --projection stereographic --out docs/images/uneven-gravity.png
 "$nc" render --scene tests/files/data/bumps.toml --projection stereographic --hud --aa --frames 10 --out docs/images/uneven-triangle.png
+# Three dimensions (docs/space.md): the space scene in both views at K = -1, 0, +1; honeycombs.
+for p in equidistant stereographic; do
+    for k in -1 0 1; do
+        "$nc" render --scene space --frames 60 --aa --size 400x400 --projection "$p" --curvature "$k" --out "$tmp/s$p$k.png"
+    done
+done
+python3 "$tmp/join.py" "$tmp/sequidistant-1.png" "$tmp/sequidistant0.png" "$tmp/sequidistant1.png" docs/images/space.png
+python3 "$tmp/join.py" "$tmp/sstereographic-1.png" "$tmp/sstereographic0.png" "$tmp/sstereographic1.png" docs/images/space-map.png
+"$nc" render --scene order-5-cubic --frames 0 --aa --size 400x400 --out "$tmp/c1.png"
+"$nc" render --scene order-5-cubic --frames 0 --aa --size 400x400 --curvature -0.7 --out "$tmp/c2.png"
+"$nc" render --scene 8-cell --frames 0 --aa --size 400x400 --curvature 0.6 --out "$tmp/c3.png"
+python3 "$tmp/join.py" "$tmp/c1.png" "$tmp/c2.png" "$tmp/c3.png" docs/images/honeycombs.png

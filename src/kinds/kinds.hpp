@@ -19,6 +19,7 @@
 
 #include "kinds/constant.hpp"
 #include "kinds/kind.hpp"
+#include "kinds/space.hpp"
 #include "kinds/uneven.hpp"
 #include "world/engines.hpp"
 #include "world/quote.hpp"
@@ -57,8 +58,9 @@ auto constant_row_type(std::index_sequence<I...>)
     -> KindRow<On<world::EngineKind{I}, Constant<typename std::tuple_element_t<I, world::EngineTable>::world>>...>;
 using ConstantRow = decltype(constant_row_type(std::make_index_sequence<world::kEngineCount>{}));
 
-inline bool constant_accepts(const world::Scene& s) { return s.bumps.empty(); }
-inline bool uneven_accepts(const world::Scene& s) { return !s.bumps.empty(); }
+inline bool constant_accepts(const world::Scene& s) { return s.bumps.empty() && !s.space; }
+inline bool uneven_accepts(const world::Scene& s) { return !s.bumps.empty() && !s.space; }
+inline bool space_accepts(const world::Scene& s) { return s.space; }
 
 inline constexpr std::tuple kKindTable{
     ConstantRow{"constant", "a world of constant curvature K, the paper's (every scene without [[bump]] tables)",
@@ -66,6 +68,8 @@ inline constexpr std::tuple kKindTable{
     KindRow<On<world::engine_named("double"), Uneven>>{
         "uneven", "a world whose curvature varies from place to place (a scene with [[bump]] tables, docs/uneven.md)",
         uneven_accepts, {}},
+    KindRow<On<world::engine_named("double"), Space>>{
+        "space", "a three-dimensional space of constant curvature K (the space scene, docs/space.md)", space_accepts, {}},
 };
 using KindTable = std::remove_const_t<decltype(kKindTable)>;
 inline constexpr std::size_t kKindCount = std::tuple_size_v<KindTable>;

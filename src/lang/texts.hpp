@@ -29,6 +29,11 @@
     /* an uneven world's two views, and its bumps' gain (src/uneven) */                            \
     X(view_chart, "chart")                                                                          \
     X(view_inhabitant, "inhabitant's view")                                                         \
+    X(view_map, "map")  /* the 3D world's map: the ball seen from outside */                          \
+    /* a honeycomb's fit (src/space/honeycomb.hpp): its name, its cubes round an edge, the K */      \
+    X(honeycomb_fits, "%s: %d cubes round each edge fit: K = %+.3f")                                 \
+    X(honeycomb_gap, "%s: %d cubes round an edge leave %+.1f degrees; it closes at K = %+.3f")           \
+    X(honeycomb_none, "%s: no such cube at this K; it closes at K = %+.3f")                          \
     X(bump_gain, "bumps x%.2f")                                                                     \
     /* the legends: the desktop's keys, the kiosk's buttons, the zoom's, one button, attract */    \
     X(legend_keys, "arrows/WASD  Space fire  +/- K  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
@@ -37,6 +42,8 @@
     X(legend_zoom_keys, "arrows/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M measure  H HUD  R reset  Esc") \
     X(legend_uneven_keys, "arrows/WASD  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
     X(legend_uneven_game_keys, "arrows/WASD  Space fire  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
+    X(legend_space_keys, "arrows/WASD  I K pitch  Q E roll  +/- K  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
+    X(legend_space_buttons, "thrust  left/right  pitch  roll  curvature +/-  preset  reset")         \
     X(legend_zoom_buttons, "thrust  left/right  zoom +/-  preset  reset")                           \
     X(legend_one_button_game, "one button: hold fire to thrust, tap to fire")                       \
     X(legend_one_button, "one button: hold fire to thrust, tap for the next K")                     \

@@ -162,6 +162,9 @@ struct Scene {
     GameSettings game;             // game.on: the Asteroids game runs in this scene
     std::vector<MeasureDecl> measures;  // instruments shown from the start (the live one is extra)
     std::vector<SceneBump> bumps;  // any: the world is uneven (src/uneven)
+    bool space = false;            // a three-dimensional world (src/space; its bodies made there)
+    int honeycomb_cells = 0;       // and in it a honeycomb of cubes, this many round an edge
+                                   // (3: the 8-cell, 5: {4,3,5}); 0: none, the polyhedra
     double strength_rate = 0.5;    // the bumps' strength keys: their gain changes this much a second
 };
 

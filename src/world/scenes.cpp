@@ -329,6 +329,13 @@ struct SceneRow {
     const char* about;
     void (*make)(Scene&, const SceneParams&);
 };
+// The three-dimensional world (src/space/scene_world.hpp makes its polyhedra, the ship and the
+// grid), or a honeycomb of cubes there at the K where it closes.
+void space(Scene& s, int honeycomb_cells = 0) {
+    s.space = true, s.honeycomb_cells = honeycomb_cells;
+    s.curvature = honeycomb_cells == 3 ? 1 : honeycomb_cells == 5 ? -1 : 0, s.limit_radius = 3;
+}
+
 const SceneRow kScenes[] = {
     {"kiosk", "the kiosk's: a ship, four drifting bodies and the grid", [](Scene& s, const SceneParams&) { kiosk(s); }},
     {"asteroids", "the game: Asteroids in curved space, K turning each level", [](Scene& s, const SceneParams&) { asteroids(s); }},
@@ -354,6 +361,12 @@ const SceneRow kScenes[] = {
      [](Scene& s, const SceneParams&) { hills(s); }},
     {"gravity", "uneven: the game around a mass that bends the asteroids' and the bullets' paths",
      [](Scene& s, const SceneParams&) { gravity(s); }},
+    {"space", "three dimensions: a dozen polyhedra drifting and spinning in a curved space (P: the inhabitant's view or the map)",
+     [](Scene& s, const SceneParams&) { space(s); }},
+    {"8-cell", "three dimensions: the 8-cell, eight cubes that fill S3 at K = +1, three round each edge; turn K and they part",
+     [](Scene& s, const SceneParams&) { space(s, 3); }},
+    {"order-5-cubic", "three dimensions: the order-5 cubic honeycomb {4,3,5}, five cubes round each edge, closing at K = -1; turn K and they part",
+     [](Scene& s, const SceneParams&) { space(s, 5); }},
     {"stress", "many bodies of many vertices (--bodies, --vertices, --tessellation)", [](Scene& s, const SceneParams& p) { stress(s, p); }},
 };
 

@@ -48,6 +48,7 @@ const Case kCases[] = {
     {.what = "a large HUD", .scene = "kiosk", .legend = "keys", .large = true},
     {.what = "the Earth's zoom line", .scene = "earth", .legend = "keys"},
     {.what = "an uneven world's note", .scene = "hills", .legend = "keys"},
+    {.what = "the three-dimensional world", .scene = "space", .legend = "keys"},
     {.what = "a figure's title, no HUD", .scene = "fig4", .title = "{7,3}, K = -1, stereographic", .hud = false},
 };
 const Size kSizes[] = {{480, 480}, {800, 480}, {1280, 720}, {1920, 1080}};

@@ -220,6 +220,12 @@ TEST(NoAllocation, TheShipOverTheEarthAllocatesNothingPerFrame) {
     EXPECT_EQ(loop_allocations(world::engine_named("double"), 2, "earth"), 0);
 }
 
+// The three-dimensional world (src/space) in the frame loop: the keys fly the ship, P switches
+// its two views.
+TEST(NoAllocation, TheThreeDimensionalWorldAllocatesNothingPerFrame) {
+    EXPECT_EQ(loop_allocations(world::engine_named("double"), 1, "space"), 0);  // (its one engine)
+}
+
 // An uneven world (src/uneven): in the frame loop with the keys, and in both views with its
 // bumps' strength and K turned every frame, so that every cache (the field, the fan, the
 // inhabitant's view's table, the grid lines' outlines) is rebuilt every frame, the live

@@ -17,7 +17,7 @@ help_names() {    # COMMAND OPTION
 }
 # The names the README gives for an option: its `--option a|b|c` (backquoted).
 readme_names() {    # OPTION
-    grep -o -- "\`$1 [a-z0-9|]*\`" "$readme" | head -n 1 | sed "s/^\`$1 //; s/\`$//" | tr '|' '\n'
+    grep -o -- "\`$1 [a-z0-9|-]*\`" "$readme" | head -n 1 | sed "s/^\`$1 //; s/\`$//" | tr '|' '\n'
 }
 check() {    # WHAT EXPECTED ACTUAL
     if [ "$2" != "$3" ]; then

@@ -1,0 +1,89 @@
+// The three-dimensional world (space/scene_world.hpp, docs/space.md) as a kind (kinds/kind.hpp):
+// double only, drawn on one thread (space/scene_draw.hpp) in its two views, P switching them —
+// the inhabitant's view (the projection setting's azimuthal equidistant, the default) and the
+// map (stereographic) — with the buttons and keys of the world of constant K, and dumped as each
+// body's distance, direction and facing (docs/file-formats.md).
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "kinds/constant.hpp"
+#include "kinds/kind.hpp"
+#include "space/scene_draw.hpp"
+
+namespace noneuclid::kinds {
+
+class Space {
+public:
+    using World = space::SceneWorld;
+
+    explicit Space(const world::Scene& scene) : world(scene) {}
+
+    space::SceneWorld world;
+
+    void prepare(const render::WorkerPool&) {}
+    void draw(const render::Canvas& c, const render::DrawOptions& o, bool backdrop, render::WorkerPool&) {
+        space::draw_space(c, world, o, is_map(o.projection), backdrop);
+    }
+
+    static bool is_map(geo::Projection p) { return p == geo::Projection::stereographic; }
+    static geo::Projection next_view(geo::Projection p) {
+        return is_map(p) ? geo::Projection::azimuthal_equidistant : geo::Projection::stereographic;
+    }
+    static const char* view_words(geo::Projection p, lang::Language l) {
+        return lang::text(is_map(p) ? lang::Text::view_map : lang::Text::view_inhabitant, l);
+    }
+    static bool marks_in(geo::Projection) { return false; }  // (no instruments yet)
+    // A honeycomb's fit at the current K: its cubes round an edge close it, or leave this wedge
+    // (negative: they overlap); within 0.05 degrees it fits.
+    bool note(char* out, std::size_t size, lang::Language l) const {
+        const space::Honeycomb& h = world.honeycomb_as_set();
+        if (!h.kind) return false;
+        space::CubeShape shape;
+        if (!space::cube_shape(world.K, h.kind->edge, shape)) {
+            std::snprintf(out, size, lang::text(lang::Text::honeycomb_none, l), h.kind->name, h.closing_K);
+            return true;
+        }
+        const double gap = (2 * 3.14159265358979323846 - h.kind->cells * shape.dihedral) * 180 / 3.14159265358979323846;
+        if (std::fabs(gap) < 0.05)
+            std::snprintf(out, size, lang::text(lang::Text::honeycomb_fits, l), h.kind->name, h.kind->cells, world.K);
+        else
+            std::snprintf(out, size, lang::text(lang::Text::honeycomb_gap, l), h.kind->name, h.kind->cells, gap, h.closing_K);
+        return true;
+    }
+    static lang::Text legend(bool keys, const world::Scene&) {
+        return keys ? lang::Text::legend_space_keys : lang::Text::legend_space_buttons;
+    }
+
+    // One line (docs/file-formats.md): the frame, the time, K, and each body's kind (ship or
+    // body), solid, "r" (its distance from O), "dir" (the unit 3-vector at O toward it), "facing"
+    // (its forward, in the frame carried from O) and speed.
+    void dump(const files::DumpOptions&, std::string& line) const {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "{\"frame\":%ld,\"t\":%.9g,\"K\":%.9g,\"kind\":\"space\",\"bodies\":[", world.frame,
+                      world.time, world.K);
+        line = buf;
+        for (std::size_t i = 0; i < world.bodies.size(); ++i) {
+            const space::Body<double>& b = world.bodies[i];
+            const space::V3<double>& u = b.at.u;
+            const space::V3<double>& f = b.frame.forward;
+            std::snprintf(buf, sizeof buf,
+                          "%s{\"kind\":\"%s\",\"solid\":\"%s\",\"r\":%.9g,\"dir\":[%.9g,%.9g,%.9g],"
+                          "\"facing\":[%.9g,%.9g,%.9g],\"speed\":%.9g}",
+                          i ? "," : "", b.ship ? "ship" : "body", space::kSolids[b.solid].name, b.at.r, u.x, u.y, u.z,
+                          f.x, f.y, f.z, b.speed);
+            line += buf;
+        }
+        line += "]}";
+    }
+
+    static bool ship_speed(const World& w, double& speed) {
+        speed = w.bodies.front().speed;
+        return true;
+    }
+    static bool aim(const World&, double&, double&) { return false; }  // (no game)
+};
+
+}  // namespace noneuclid::kinds

@@ -1,0 +1,132 @@
+// The three-dimensional world drawn (docs/space.md), in its two views:
+//  - the inhabitant's: what the ship's eye sees, 90 degrees across the disc (the layout's, as the
+//    2D world's; outside it shaded), the other bodies and the grid (in S³ each seen both ways round);
+//  - the map: the ball of the 3D azimuthal equidistant view, its limit sphere's outline, every
+//    body and the ship, seen by a camera that orbits it once a minute.
+// The grid is the 3D form of the paper's grid lines: three families of geodesics, each through
+// the points of a square lattice (0.6 apart) on the plane of the other two axes, leaving them
+// along its own axis's carried direction, 2.4 each way. Each edge a geodesic (space/draw.hpp),
+// nearer brighter. Allocates nothing.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "render/draw_options.hpp"
+#include "space/draw.hpp"
+#include "space/scene_world.hpp"
+
+namespace noneuclid::space {
+
+inline constexpr double kGridStep = 0.6, kGridReach = 2.4;
+inline constexpr int kGridHalf = 2;  // lattice points -2..2 each way
+
+// The map's camera at world time t: 2.6 limits out, 20 degrees up, a turn a minute; the ball
+// 80% of the disc (`side`) across.
+inline MapView<double> map_camera(double limit, int width, int height, double side, double t) {
+    const double d = 2.6 * limit;
+    const double tan_radius = 1 / std::sqrt(d * d / (limit * limit) - 1);  // tan of the ball's angular radius
+    const Lens lens{width / 2.0, height / 2.0, 0.4 * side / tan_radius};
+    return orbit_camera(limit, d, 2 * 3.14159265358979323846 * t / 60, 0.35, lens);
+}
+
+// The grid's edges: three families of geodesics through a square lattice.
+template <class Edge>
+void grid_edges(double K, render::Rgb grid, Edge&& edge) {
+    const Point<double> O{0, {1, 0, 0}};
+    const V3<double> axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; ++a)
+        for (int i = -kGridHalf; i <= kGridHalf; ++i)
+            for (int j = -kGridHalf; j <= kGridHalf; ++j) {
+                // The lattice point: along the next axis i steps, then along the carried last one j.
+                const V3<double>& b = axes[(a + 1) % 3];
+                const V3<double>& c = axes[(a + 2) % 3];
+                const Walk<double> first = walk(K, O, b, kGridStep * i);
+                const Walk<double> second = walk(K, first.end, carry(first, c), kGridStep * j);
+                const V3<double> along = carry(second, carry(first, axes[a]));
+                const Point<double>& p = second.end;
+                edge(p, walk(K, p, along, kGridReach).end, grid);
+                edge(p, walk(K, p, -1.0 * along, kGridReach).end, grid);
+            }
+}
+
+// Each body's edges (but the ship's when `ship` is false).
+template <class Edge>
+void bodies_edges(const SceneWorld& w, bool ship, Edge&& edge) {
+    for (const Body<double>& body : w.bodies) {
+        if (body.ship && !ship) continue;
+        const Solid& s = kSolids[body.solid];
+        const render::Rgb rgb{body.color[0], body.color[1], body.color[2]};
+        for (int e = 0; e < s.edge_count; ++e)
+            edge(vertex_of(w.K, body.at, body.frame, s, s.edges[e][0], body.size),
+                 vertex_of(w.K, body.at, body.frame, s, s.edges[e][1], body.size), rgb);
+    }
+}
+
+// Calls edge(p, q, rgb) for every edge of the world: the grid's or the honeycomb's, then each
+// body's (but the ship's when `ship` is false).
+template <class Edge>
+void world_edges(SceneWorld& w, bool ship, Edge&& edge) {
+    const double K = w.K;
+    const render::Rgb grid{70, 90, 120};
+    if (w.honeycomb_as_set().kind) {
+        const Honeycomb& h = w.honeycomb();
+        const render::Rgb cube{150, 170, 230};
+        const Solid& s = kSolids[1];
+        for (int c = 0; c < h.count(); ++c)
+            for (int e = 0; e < s.edge_count; ++e) edge(h.vertex(c, s.edges[e][0]), h.vertex(c, s.edges[e][1]), cube);
+    } else
+        grid_edges(K, grid, edge);
+    bodies_edges(w, ship, edge);
+}
+
+// The circle both views show through (the 2D disc's: the layout's, render/layout.hpp), its
+// outside shaded and its rim drawn as the 2D limit circle is, over what was drawn.
+inline void porthole(const render::Canvas& c, double r, const render::DrawOptions& o, const render::LineStyle& line) {
+    if (o.shade_outside) render::shade_outside_circle(c, c.width() / 2.0, c.height() / 2.0, r, o.outside);
+    if (!o.rim_line) return;
+    std::array<geo::SubPoint, 97> rim;
+    for (std::size_t i = 0; i < rim.size(); ++i) {
+        const double a = 2 * 3.14159265358979323846 * static_cast<double>(i) / 96;
+        rim[i] = geo::to_sub(c.width() / 2.0 + r * std::cos(a), c.height() / 2.0 + r * std::sin(a));
+    }
+    render::draw_polyline(c, rim.data(), 97, false, o.rim, line, render::held_rows(c));
+}
+
+// The world in the inhabitant's view (map false) or the map, over the background (backdrop) or
+// what the canvas holds, within the disc of o.disc (0: the smaller side).
+inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::DrawOptions& o, bool map,
+                       bool backdrop) {
+    if (backdrop) c.clear(o.background);
+    EdgeStyle style;
+    style.line.antialias = o.antialias, style.line.width = o.line_width;
+    const double limit = w.limit();
+    const double side = o.disc > 0 ? o.disc : (c.width() < c.height() ? c.width() : c.height());
+    if (map) {
+        const MapView<double> view = map_camera(limit, c.width(), c.height(), side, w.time);
+        style.near = norm(view.camera) - limit, style.reach = norm(view.camera) + limit;
+        world_edges(w, true, [&](const Point<double>& p, const Point<double>& q, render::Rgb rgb) {
+            style.color = rgb;
+            draw_edge(c, view, w.K, p, q, style);
+        });
+        // The limit sphere's outline: the circle the ball's edge makes on the screen.
+        const double d = norm(view.camera);
+        porthole(c, view.lens.focal / std::sqrt(d * d / (limit * limit) - 1), o, style.line);
+        return;
+    }
+    const Body<double>& ship = w.bodies.front();
+    InhabitantView<double> eye;
+    eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
+    eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
+    style.near = 0, style.reach = w.K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(w.K) : 2 * limit;
+    InhabitantView<double> around = eye;
+    around.around = true;
+    world_edges(w, false, [&](const Point<double>& p, const Point<double>& q, render::Rgb rgb) {
+        style.color = rgb;
+        draw_edge(c, eye, w.K, p, q, style);
+        if (w.K > 0) draw_edge(c, around, w.K, p, q, style);
+    });
+    porthole(c, side / 2, o, style.line);
+}
+
+}  // namespace noneuclid::space

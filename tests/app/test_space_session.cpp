@@ -1,0 +1,159 @@
+// The three-dimensional world (src/space) as a kind behind the session (kinds/space.hpp): the
+// `space` scene's dump, two seconds on at K = -1, 0, +1, against the geodesics of its start in
+// the tests' own embedding (tests/space/embedding.hpp, long double): each body's "r" and "dir"
+// where C_K(s) P + S_K(s) V puts it, its "facing" the start's turned by its spin and carried
+// along; and the session's two views, P switching them, the map's bodies all inside the limit
+// sphere's outline.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "../space/embedding.hpp"
+#include "app/options.hpp"
+#include "app/session.hpp"
+#include "app/setup.hpp"
+#include "render/font.hpp"
+#include "space/scene_world.hpp"
+
+namespace noneuclid {
+namespace {
+
+using namespace space_embedding;
+
+struct Dumped {
+    char kind[16] = {}, solid[16] = {};
+    double r = 0, dir[3] = {}, facing[3] = {}, speed = 0;
+};
+
+// The bodies of one dump line, read field by field as a script would.
+std::vector<Dumped> read_bodies(const std::string& line, double& t, double& K) {
+    std::vector<Dumped> out;
+    EXPECT_EQ(std::sscanf(line.c_str(), "{\"frame\":%*d,\"t\":%lf,\"K\":%lf,\"kind\":\"space\"", &t, &K), 2) << line;
+    for (std::size_t at = line.find("{\"kind\":"); at != std::string::npos; at = line.find("{\"kind\":", at + 1)) {
+        Dumped d;
+        const int n = std::sscanf(line.c_str() + at,
+                                  "{\"kind\":\"%15[a-z]\",\"solid\":\"%15[a-z]\",\"r\":%lf,\"dir\":[%lf,%lf,%lf],"
+                                  "\"facing\":[%lf,%lf,%lf],\"speed\":%lf}",
+                                  d.kind, d.solid, &d.r, &d.dir[0], &d.dir[1], &d.dir[2], &d.facing[0], &d.facing[1],
+                                  &d.facing[2], &d.speed);
+        EXPECT_EQ(n, 10) << line.substr(at, 200);
+        out.push_back(d);
+    }
+    return out;
+}
+
+std::unique_ptr<app::Session> space_session(app::Options o = app::defaults(app::Command::render)) {
+    o.scene = "space";
+    const world::Scene scene = app::load_scene(o);
+    const kinds::KindChoice kind = app::world_kind(o, scene);
+    return app::make_session(kind, scene, app::session_options(o, scene, o.legend, kind), render::builtin_font(), nullptr);
+}
+
+TEST(SpaceSession, TheDumpIsTheGeodesicsOfTheStart) {
+    world::Scene scene;
+    ASSERT_TRUE(world::builtin_scene("space", {}, scene));
+    const space::Start<double> start = space::space_start(scene);
+    ASSERT_EQ(start.bodies.size(), 13u);  // the ship and a dozen
+    for (const world::Action preset : {world::Action::hyperbolic, world::Action::flat, world::Action::spherical}) {
+        const auto s = space_session();
+        app::ScriptPlayer none;
+        s->start(none);
+        s->queue({preset, true}), s->queue({preset, false});
+        for (int f = 0; f < 120; ++f) s->advance(none);  // (2 s: every body still inside the limit)
+        std::string line;
+        s->dump(800, 480, line);
+        double t = 0, K = 0;
+        const std::vector<Dumped> got = read_bodies(line, t, K);
+        ASSERT_EQ(got.size(), start.bodies.size());
+        EXPECT_NEAR(t, 2.0, 1e-9);
+        EXPECT_STREQ(got[0].kind, "ship");
+        LD worst_at = 0, worst_facing = 0;
+        for (std::size_t i = 1; i < got.size(); ++i) {
+            const space::Body<double>& b = start.bodies[i];
+            const Dumped& d = got[i];
+            EXPECT_STREQ(d.kind, "body");
+            EXPECT_STREQ(d.solid, space::kSolids[b.solid].name);
+            EXPECT_NEAR(std::hypot(d.dir[0], std::hypot(d.dir[1], d.dir[2])), 1.0, 1e-8);
+            EXPECT_NEAR(std::hypot(d.facing[0], std::hypot(d.facing[1], d.facing[2])), 1.0, 1e-8);
+            const LD dist = b.speed * t;
+            const V3<double> axis =
+                space::unit(b.spin_axis.x * b.frame.forward + b.spin_axis.z * b.frame.up - b.spin_axis.y * b.frame.right);
+            const V3<double> turned = space::turned(b.frame.forward, axis, b.spin * t);
+            const Point<double> at{d.r, {d.dir[0], d.dir[1], d.dir[2]}};
+            const V3<double> facing{d.facing[0], d.facing[1], d.facing[2]};
+            if (K == 0) {  // straight lines, and a carried vector is a vector
+                const V3<double> want = space::map_position(b.at) + static_cast<double>(dist) * b.travel;
+                worst_at = std::max<LD>(worst_at, space::norm(space::map_position(at) - want));
+                worst_facing = std::max<LD>(worst_facing, space::norm(facing - turned));
+                continue;
+            }
+            const R4 P = embed(K, b.at), V = tangent(K, b.at, b.travel);
+            const R4 along = (-K * S(K, dist)) * P + C(K, dist) * V;
+            worst_at = std::max(worst_at, near_distance(K, C(K, dist) * P + S(K, dist) * V, embed(K, at)));
+            const R4 X = tangent(K, b.at, turned);  // the part along the travel follows the tangent
+            const LD a = g(K, X, V);
+            worst_facing = std::max(worst_facing, gap(carried(K, embed(K, at), (X - a * V) + a * along), facing));
+        }
+        // (The dump's 9 significant digits and the step's rounding.)
+        EXPECT_LT(worst_at, 1e-7) << "K = " << K;
+        EXPECT_LT(worst_facing, 1e-7) << "K = " << K;
+        std::printf("K = %+.0f: 12 bodies after 2 s, %.1Le from their geodesics, facings %.1Le off\n", K, worst_at,
+                    worst_facing);
+    }
+}
+
+// Both views at K = -1, 0, +1: the inhabitant's view (the default) shows the bodies ahead and the
+// grid, to the disc's rim; P gives the map, where everything lies inside the limit sphere's
+// outline, a circle 80% of the disc across; P again, the inhabitant's view. Nothing is drawn
+// outside the disc, which is shaded as the 2D world's outside is.
+TEST(SpaceSession, BothViewsDrawAndTheMapHoldsTheWorldInItsBall) {
+    const int W = 800, H = 480;
+    std::vector<uint32_t> px(static_cast<std::size_t>(W) * H);
+    const render::PixelFormat fmt = render::PixelFormat::xrgb8888();
+    const render::Canvas c(px.data(), W, H, W * 4, fmt);
+    for (const world::Action preset : {world::Action::hyperbolic, world::Action::flat, world::Action::spherical}) {
+        const auto s = space_session();
+        app::ScriptPlayer none;
+        s->start(none);
+        s->queue({preset, true}), s->queue({preset, false});
+        for (int f = 0; f < 30; ++f) s->advance(none);
+        const geo::Projection first = s->options().draw.projection;
+        const uint32_t background = fmt.pack(s->options().draw.background), outside = fmt.pack(s->options().draw.outside);
+        for (int view = 0; view < 3; ++view) {
+            s->draw_world(c);
+            int lit = 0, outside_ball = 0, outside_disc = 0;
+            const double disc = s->layout(W, H).disc / 2.0, ball = 0.8 * disc;  // (the map's outline)
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) {
+                    const double r = std::hypot(x + 0.5 - W / 2.0, y + 0.5 - H / 2.0);
+                    if (c.get_word(x, y) == background) continue;
+                    if (c.get_word(x, y) == outside) {
+                        EXPECT_GT(r, (view == 1 ? ball : disc) - 1);  // (the shade: only outside the disc, or the ball)
+                        continue;
+                    }
+                    ++lit;
+                    if (r > ball + 2.5 && r < disc - 2.5) ++outside_ball;
+                    if (r > disc + 2.5) ++outside_disc;
+                }
+            EXPECT_EQ(outside_disc, 0);
+            SCOPED_TRACE("K preset " + std::to_string(static_cast<int>(preset)) + ", view " + std::to_string(view));
+            EXPECT_GT(lit, 2000);  // the grid and the bodies
+            if (view == 1) {
+                EXPECT_NE(s->options().draw.projection, first);
+                EXPECT_EQ(outside_ball, 0);
+            } else {
+                EXPECT_EQ(s->options().draw.projection, first);
+                EXPECT_GT(outside_ball, 200);  // the inhabitant's view fills the disc
+            }
+            s->queue({world::Action::projection, true}), s->queue({world::Action::projection, false});
+            s->advance(none);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace noneuclid
