@@ -33,7 +33,7 @@ extern const Entry kTexts_de[] = {
     {Text::legend_buttons_no_fire, "Schub  links/rechts  Krümmung +/-  Vorgabe  Neustart"},
     {Text::legend_zoom_keys, "Pfeile/WASD  +/- Zoom  1 2 3 K=-1,0,1  P Projektion  M Messen  H HUD  R Neustart  Esc"},
     {Text::legend_space_keys, "Pfeile/WASD  I K Nicken  Q E Rollen  +/- K  1 2 3 K=-1,0,1  P Ansicht  H HUD  R Neustart  Esc"},
-    {Text::legend_space_buttons, "Schub  links/rechts  Nicken  Rollen  Krümmung +/-  Vorgabe  Neustart"},
+    {Text::legend_space_buttons, "Schub  links/rechts  Krümmung +/-  Feuer+links/rechts Rollen  Feuer+Krümmung Nicken"},
     {Text::legend_uneven_keys, "Pfeile/WASD  +/- K  < > Beulen  1 2 3 K=-1,0,1  P Ansicht  H HUD  R Neustart  Esc"},
     {Text::legend_uneven_game_keys, "Pfeile/WASD  Leertaste Feuer  +/- K  < > Beulen  1 2 3 K=-1,0,1  P Ansicht  H HUD  R Neustart  Esc"},
     {Text::legend_zoom_buttons, "Schub  links/rechts  Zoom +/-  Vorgabe  Neustart"},

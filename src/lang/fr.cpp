@@ -33,7 +33,7 @@ extern const Entry kTexts_fr[] = {
     {Text::legend_buttons_no_fire, "poussée  gauche/droite  courbure +/-  préréglage  reprise"},
     {Text::legend_zoom_keys, "flèches/WASD  +/- zoom  1 2 3 K=-1,0,1  P projection  M mesure  H HUD  R reprise  Échap"},
     {Text::legend_space_keys, "flèches/WASD  I K tangage  Q E roulis  +/- K  1 2 3 K=-1,0,1  P vue  H HUD  R reprise  Échap"},
-    {Text::legend_space_buttons, "poussée  gauche/droite  tangage  roulis  courbure +/-  préréglage  reprise"},
+    {Text::legend_space_buttons, "poussée  gauche/droite  courbure +/-  feu+gauche/droite roulis  feu+courbure tangage"},
     {Text::legend_uneven_keys, "flèches/WASD  +/- K  < > bosses  1 2 3 K=-1,0,1  P vue  H HUD  R reprise  Échap"},
     {Text::legend_uneven_game_keys, "flèches/WASD  Espace feu  +/- K  < > bosses  1 2 3 K=-1,0,1  P vue  H HUD  R reprise  Échap"},
     {Text::legend_zoom_buttons, "poussée  gauche/droite  zoom +/-  préréglage  reprise"},

@@ -43,7 +43,7 @@
     X(legend_uneven_keys, "arrows/WASD  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
     X(legend_uneven_game_keys, "arrows/WASD  Space fire  +/- K  < > bumps  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
     X(legend_space_keys, "arrows/WASD  I K pitch  Q E roll  +/- K  1 2 3 K=-1,0,1  P view  H HUD  R reset  Esc") \
-    X(legend_space_buttons, "thrust  left/right  pitch  roll  curvature +/-  preset  reset")         \
+    X(legend_space_buttons, "thrust  left/right  curvature +/-  fire+left/right roll  fire+curvature pitch") \
     X(legend_zoom_buttons, "thrust  left/right  zoom +/-  preset  reset")                           \
     X(legend_one_button_game, "one button: hold fire to thrust, tap to fire")                       \
     X(legend_one_button, "one button: hold fire to thrust, tap for the next K")                     \

@@ -11,6 +11,9 @@
 //  4. the limit sphere: a centre past R reappears at (2R - r, -u), its frame unchanged in the
 //     carried coordinates. At K > 0 with R = pi / sqrt K that is exactly the geodesic going on
 //     through the antipode (tested against the embedding).
+// A kiosk has six buttons (thrust, left, right, curvature up and down, fire), and there is no
+// shot here: fire is the shift. While it is held, left and right roll and the curvature buttons
+// pitch (up: the nose rises), and K stays.
 // Changing K leaves every body's (r, u) and frame as they are (the paper's rule); held curvature
 // up and down change K by `curvature_rate` a second within [-1, 1]; the presets set K = -1, 0, 1;
 // reset restores the start. At K > 0 the limit distance in force is min(R, pi / sqrt K). Nothing
@@ -92,7 +95,7 @@ public:
 
     void step(double dt) {
         using world::Action;
-        const double dk = (held(Action::curvature_up) ? 1 : 0) - (held(Action::curvature_down) ? 1 : 0);
+        const double dk = shifted() ? 0 : (held(Action::curvature_up) ? 1 : 0) - (held(Action::curvature_down) ? 1 : 0);
         if (dk != 0) {
             const double k = static_cast<double>(K) + dk * start_.curvature_rate * dt;
             K = T(k < -1 ? -1 : (k > 1 ? 1 : k));
@@ -115,17 +118,21 @@ private:
             b.travel = unit(v, b.frame.forward);
             b.speed = speed < T(start_.max_speed) ? speed : T(start_.max_speed);
         }
-        const auto rate = [&](Action more, Action less) {
-            return ((held(more) ? 1 : 0) - (held(less) ? 1 : 0)) * start_.turn_rate * dt;
-        };
-        const double yaw = rate(Action::left, Action::right), pitch = rate(Action::pitch_up, Action::pitch_down),
-                     roll = rate(Action::roll_right, Action::roll_left);
+        const bool shift = shifted();
+        const auto rate = [&](bool more, bool less) { return ((more ? 1 : 0) - (less ? 1 : 0)) * start_.turn_rate * dt; };
+        const auto with_shift = [&](Action a) { return shift && held(a); };
+        const double yaw = shift ? 0 : rate(held(Action::left), held(Action::right)),
+                     pitch = rate(held(Action::pitch_up) || with_shift(Action::curvature_up),
+                                  held(Action::pitch_down) || with_shift(Action::curvature_down)),
+                     roll = rate(held(Action::roll_right) || with_shift(Action::right),
+                                 held(Action::roll_left) || with_shift(Action::left));
         Frame<T>& f = b.frame;
         if (yaw != 0) f.forward = turned(f.forward, f.up, T(yaw)), f.right = turned(f.right, f.up, T(yaw));
         if (pitch != 0) f.forward = turned(f.forward, f.right, T(pitch)), f.up = turned(f.up, f.right, T(pitch));
         if (roll != 0) f.up = turned(f.up, f.forward, T(roll)), f.right = turned(f.right, f.forward, T(roll));
         if (yaw != 0 || pitch != 0 || roll != 0) f = orthonormal(f);
     }
+    bool shifted() const { return held(world::Action::fire); }
     void spin(Body<T>& b, T dt) {
         const V3<T> axis = unit(b.spin_axis.x * b.frame.forward + b.spin_axis.z * b.frame.up - b.spin_axis.y * b.frame.right);
         const T angle = b.spin * dt;

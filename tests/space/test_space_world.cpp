@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <tuple>
 
 #include "embedding.hpp"
 #include "space/world.hpp"
@@ -196,6 +197,33 @@ TEST(SpaceWorld, TheShipYawsPitchesAndRollsAboutItsOwnAxes) {
     EXPECT_NEAR(space::dot(f.forward, f.up), 0, 1e-12);
     EXPECT_LT(space::norm(space::cross(f.forward, f.up) - f.right), 1e-12);
     EXPECT_NEAR(w.bodies[0].speed, s.max_speed, 1e-12);  // thrust stops at the top speed
+}
+
+// The kiosk's shift: fire held, left and right roll and the curvature buttons pitch; K stays.
+TEST(SpaceWorld, WithFireHeldTheKiosksButtonsRollAndPitch) {
+    using world::Action;
+    for (const auto& [button, forward, up] :
+         {std::tuple{Action::left, V3<double>{1, 0, 0}, V3<double>{0, 1, 0}}, {Action::right, {1, 0, 0}, {0, -1, 0}},
+          {Action::curvature_up, {0, 0, 1}, {-1, 0, 0}}, {Action::curvature_down, {0, 0, -1}, {1, 0, 0}}}) {
+        space::Start<double> s;
+        s.K = 0.25, s.turn_rate = 3.14159265358979323846 / 2 / (90 * kDt);
+        space::Body<double> ship;
+        ship.ship = true;
+        s.bodies.push_back(ship);
+        space::World<double> w(s);
+        w.press(Action::fire), w.press(button);
+        for (int i = 0; i < 90; ++i) w.step(kDt);
+        EXPECT_LT(space::norm(w.bodies[0].frame.forward - forward), 1e-12) << world::action_name(button);
+        EXPECT_LT(space::norm(w.bodies[0].frame.up - up), 1e-12) << world::action_name(button);
+        EXPECT_EQ(w.K, 0.25) << world::action_name(button);
+        w.release(Action::fire);  // (and without the shift, the button is itself again: K, or a yaw)
+        const V3<double> before = w.bodies[0].frame.forward;
+        w.step(kDt);
+        if (button == Action::curvature_up || button == Action::curvature_down)
+            EXPECT_NE(w.K, 0.25) << world::action_name(button);
+        else
+            EXPECT_GT(space::norm(w.bodies[0].frame.forward - before), 0.01) << world::action_name(button);
+    }
 }
 
 // The curvature keys turn K at the scene's rate within [-1, 1], the presets set it, reset restores

@@ -209,6 +209,32 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     await page.close();
   });
 
+  // The three-dimensional world (src/space): thrust, a pitch (I) and a roll (E), then P for the map;
+  // the canvas equals render of the run's recording.
+  await check('?scene=space: thrust, pitch, roll and the map; the canvas equals render of its recording', async () => {
+    const {page, started} = await open('scene=space&size=400x300');
+    expect(started === true, 'the page did not start');
+    await waitFrames(page, 3);
+    for (const [key, code, keyCode, frames] of [['w', 'KeyW', 87, 20], ['i', 'KeyI', 73, 15], ['e', 'KeyE', 69, 15], ['p', 'KeyP', 80, 2]]) {
+      await page.key('keyDown', key, code, keyCode);
+      await waitFrames(page, frames);
+      await page.key('keyUp', key, code, keyCode);
+      await waitFrames(page, 2);
+    }
+    await page.evaluate('window.noneuclid.stop()');
+    const shot = path.join(work, 'space-page.png'), rec = path.join(work, 'space.rec');
+    await canvasPng(page, shot);
+    const text = await page.evaluate('window.noneuclid.recording()');
+    fs.writeFileSync(rec, text);
+    expect(/press pitch_up\n/.test(text) && /press roll_right\n/.test(text) && /tap projection\n/.test(text),
+           `the recording lacks the keys:\n${text.slice(0, 600)}`);
+    render(['--actions', rec, '--out', path.join(work, 'space-render.png')]);
+    const same = pngDiff(shot, path.join(work, 'space-render.png'));
+    expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
+    expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
+    await page.close();
+  });
+
   await check('?lang=xx is refused in one sentence; the page stays in English', async () => {
     const {page, started} = await open('lang=xx&scene=kiosk');
     expect(started === false, 'the page started with ?lang=xx');
