@@ -13,7 +13,8 @@
 // holds fire while that one is within a few degrees of the nose and in range, and holds fire
 // on the "press fire" screen to start the next game. Outside a game it measures: it turns the
 // live instrument on (a triangle, world/instruments.hpp) and drops a mark where the ship is
-// every few seconds, so the triangle's angles and area are read while K sweeps.
+// every few seconds, so the triangle's angles and area are read while K sweeps; where there is
+// no instrument (the 3D world) it only flies its tour: cruising, turning, K sweeping.
 #pragma once
 
 #include <cmath>
@@ -42,6 +43,7 @@ struct PilotView {
     double aim = 0;           // its direction from the ship's nose, radians counter-clockwise
     double distance = 0;      // and its distance
     bool measuring = false;   // the live instrument is on
+    bool instrument = true;   // there is one to turn on (not in the 3D world: there it only flies)
     double range = 0;         // how far a bullet flies
 };
 
@@ -99,7 +101,7 @@ public:
             n += set(Action::fire, aimed || (v.ready && !held_[slot(Action::fire)]), out + n);
         } else {
             n += set(Action::left, std::fmod(tt, 5.0) >= 4.4, out + n);
-            if (v.ship_speed < 1e9) {  // a ship to drop the marks
+            if (v.ship_speed < 1e9 && v.instrument) {  // a ship to drop the marks
                 if (!v.measuring) out[n++] = {Action::instrument, true}, out[n++] = {Action::instrument, false};
                 const bool mark = tt >= next_mark_;
                 if (mark) next_mark_ += o_.mark_seconds;

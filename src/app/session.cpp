@@ -253,7 +253,7 @@ private:
         PilotView v;
         v.K = static_cast<double>(world_.K);
         WK::ship_speed(world_, v.ship_speed);
-        v.measuring = world_.measuring();
+        v.measuring = world_.measuring(), v.instrument = WK::has_instrument(world_);
         const auto& g = world_.game();
         v.game = g.on();
         if (v.game) {

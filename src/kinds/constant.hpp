@@ -76,6 +76,7 @@ public:
 
     static bool ship_speed(const World& w, double& speed) { return plane_ship_speed(w, speed); }
     static bool aim(const World& w, double& turn, double& distance) { return plane_aim(w, turn, distance); }
+    static bool has_instrument(const World&) { return true; }
 
     void dump(const files::DumpOptions& o, std::string& line) const { files::dump_frame(world, o, line); }
 

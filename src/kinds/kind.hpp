@@ -23,7 +23,9 @@
 //  - legend(keys, scene): the HUD's controls line for a keyboard (keys) or the kiosk's buttons;
 //  - dump(options, line): one JSON Lines frame of `noneuclid dump` (docs/file-formats.md);
 //  - ship_speed(world, speed): whether a ship flies (the autopilot's and the engine hum's), and its
-//    speed; aim(world, turn, distance): the game's target from the ship's nose, false for none.
+//    speed; aim(world, turn, distance): the game's target from the ship's nose, false for none;
+//    has_instrument(world): whether the live instrument is there to turn on (attract mode
+//    measures with it while K sweeps).
 // Recording needs nothing of a kind: the session records the actions it applies, with the world's
 // time, and a replay applies them at the same times, so the same kind replays bit for bit.
 #pragma once
@@ -87,6 +89,7 @@ concept WorldKind = requires(K& k, const K& ck, const render::Canvas& c, const r
     ck.dump(d, line);
     { K::ship_speed(std::as_const(k.world), speed) } -> std::same_as<bool>;
     { K::aim(std::as_const(k.world), speed, speed) } -> std::same_as<bool>;
+    { K::has_instrument(std::as_const(k.world)) } -> std::same_as<bool>;
 };
 
 // ship_speed and aim for a world of the plane's bodies and game (the worlds of constant and of

@@ -84,6 +84,7 @@ public:
         return true;
     }
     static bool aim(const World&, double&, double&) { return false; }  // (no game)
+    static bool has_instrument(const World&) { return false; }        // (attract mode only flies)
 };
 
 }  // namespace noneuclid::kinds

@@ -6,6 +6,7 @@
 // sphere's outline.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,7 @@
 
 #include "../space/embedding.hpp"
 #include "app/options.hpp"
+#include "app/recorder.hpp"
 #include "app/session.hpp"
 #include "app/setup.hpp"
 #include "render/font.hpp"
@@ -153,6 +155,47 @@ TEST(SpaceSession, BothViewsDrawAndTheMapHoldsTheWorldInItsBall) {
             s->advance(none);
         }
     }
+}
+
+// Attract mode in the 3D world: after a second with no input the autopilot flies a tour — it
+// thrusts to cruising speed, turns every 5 s and sweeps K — and, there being no instrument,
+// neither turns one on nor drops marks (its recording has no instrument or fire).
+TEST(SpaceSession, AttractModeFliesATour) {
+    world::Scene scene;
+    ASSERT_TRUE(world::builtin_scene("space", {}, scene));
+    app::SessionOptions so;
+    so.attract = {1, 10, 0.25};
+    kinds::KindChoice kind;
+    std::string why;
+    ASSERT_TRUE(kinds::choose_kind(scene, nullptr, kind, why)) << why;
+    std::FILE* f = std::tmpfile();
+    ASSERT_NE(f, nullptr);
+    app::Recorder rec(f);
+    const auto s = app::make_session(kind, scene, so, render::builtin_font(), &rec);
+    app::ScriptPlayer none;
+    s->start(none);
+    std::string line;
+    double t = 0, K = 0, least = 0, most = 0;
+    for (int i = 0; i < 60 * 12; ++i) {
+        s->advance(none);
+        s->dump(800, 480, line);
+        read_bodies(line, t, K);
+        least = std::min(least, K), most = std::max(most, K);
+    }
+    EXPECT_TRUE(s->attract());
+    const std::vector<Dumped> got = read_bodies(line, t, K);
+    ASSERT_FALSE(got.empty());
+    EXPECT_GT(most - least, 1.0);  // (0.2 a second for 11 s: up to +1, then back down past 0)
+    EXPECT_GT(got[0].speed, 0.2);                 // cruising
+    EXPECT_LT(got[0].facing[0], 0.999);           // turned from where it started (nearly +x)
+    std::rewind(f);
+    std::string text;
+    for (int c; (c = std::fgetc(f)) != EOF;) text += static_cast<char>(c);
+    std::fclose(f);
+    EXPECT_NE(text.find("press thrust"), std::string::npos) << text.substr(0, 400);
+    EXPECT_NE(text.find("press left"), std::string::npos);
+    EXPECT_EQ(text.find("instrument"), std::string::npos);
+    EXPECT_EQ(text.find("fire"), std::string::npos);
 }
 
 }  // namespace
