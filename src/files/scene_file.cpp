@@ -10,6 +10,7 @@
 #include "world/world.hpp"
 #include "world/quote.hpp"
 #include "world/ranges.hpp"
+#include "files/scene_solids.hpp"
 #include "files/text_file.hpp"
 #include "files/toml_reader.hpp"
 
@@ -331,7 +332,7 @@ void read_backdrop(const Reader& r, const toml::table& root, world::Scene& s) {
 void read_scene(const toml::table& root, world::Scene& s, Images& images) {
     const Reader r(root, "");
     r.only({"curvature", "limit_radius", "presets", "thrust", "turn_rate", "curvature_rate", "sweep_rate", "body", "grid",
-            "game", "measure", "backdrop", "centre", "bump", "strength_rate"});
+            "game", "measure", "backdrop", "centre", "bump", "strength_rate", "solid"});
     s.curvature = r.number("curvature", 0, -1, 1, "K");
     s.limit_radius = r.number("limit_radius", s.limit_radius, 1e-3, world::Ranges::kLimitRadius, "R in world units");
     s.thrust = r.number("thrust", s.thrust, 0, 1e3, "world units per second^2");
@@ -345,6 +346,7 @@ void read_scene(const toml::table& root, world::Scene& s, Images& images) {
         s.presets.clear();
         for (const toml::node& e : *a) s.presets.push_back(r.as_number(e, "presets", -1, 1, "K"));
     }
+    read_solids(root, s);  // (first: a three-dimensional scene refuses the plane's tables)
     read_backdrop(r, root, s);
     if (const toml::array* grids = tables(root, "grid"))
         for (const toml::node& g : *grids) read_grid(*g.as_table(), s);

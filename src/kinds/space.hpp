@@ -72,7 +72,7 @@ public:
             std::snprintf(buf, sizeof buf,
                           "%s{\"kind\":\"%s\",\"solid\":\"%s\",\"r\":%.9g,\"dir\":[%.9g,%.9g,%.9g],"
                           "\"facing\":[%.9g,%.9g,%.9g],\"speed\":%.9g}",
-                          i ? "," : "", b.ship ? "ship" : "body", space::kSolids[b.solid].name, b.at.r, u.x, u.y, u.z,
+                          i ? "," : "", b.ship ? "ship" : "body", world.solid(b).name, b.at.r, u.x, u.y, u.z,
                           f.x, f.y, f.z, b.speed);
             line += buf;
         }

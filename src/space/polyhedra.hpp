@@ -20,6 +20,7 @@ struct Solid {
     int vertex_count, edge_count, face_count;
     const double (*vertices)[3];  // unit vectors in the body's frame (x forward, y left, z up)
     const uint8_t (*edges)[2];
+    const double* lengths = nullptr;  // each vertex's distance from the centre (null: all 1)
 };
 
 namespace solids_data {
@@ -66,12 +67,12 @@ inline constexpr Solid kSolids[] = {
 inline constexpr int kSolidCount = static_cast<int>(sizeof kSolids / sizeof kSolids[0]);
 
 // Vertex i of a body of circumradius `size` centred at c, its frame f: walked from c along the
-// flat solid's direction turned into the frame.
+// flat solid's direction turned into the frame (by its length times size, for a solid of its own).
 template <class T>
 Point<T> vertex_of(T K, const Point<T>& c, const Frame<T>& f, const Solid& s, int i, T size) {
     const double* v = s.vertices[i];
     const V3<T> d = T(v[0]) * f.forward + T(v[2]) * f.up - T(v[1]) * f.right;  // (y is left: -right)
-    return walk(K, c, d, size).end;
+    return walk(K, c, d, s.lengths ? size * T(s.lengths[i]) : size).end;
 }
 
 // The 8-cell (the tesseract) in S³ of curvature K, one of its cubes centred at O with its faces

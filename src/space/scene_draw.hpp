@@ -55,7 +55,7 @@ template <class Edge>
 void bodies_edges(const SceneWorld& w, bool ship, Edge&& edge) {
     for (const Body<double>& body : w.bodies) {
         if (body.ship && !ship) continue;
-        const Solid& s = kSolids[body.solid];
+        const Solid& s = w.solid(body);
         const render::Rgb rgb{body.color[0], body.color[1], body.color[2]};
         for (int e = 0; e < s.edge_count; ++e)
             edge(vertex_of(w.K, body.at, body.frame, s, s.edges[e][0], body.size),

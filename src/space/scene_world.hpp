@@ -6,7 +6,10 @@
 // or, in a honeycomb scene, the ship alone among the honeycomb's cubes (space/honeycomb.hpp).
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "space/honeycomb.hpp"
@@ -33,6 +36,23 @@ struct Sequence {
 
 inline constexpr int kSpaceBodies = 12;
 
+// A scene file's solid as a body: a named shape, or its own (kSolidCount + `own`, the index of
+// its own shape in the SceneWorld), placed, sent and spun as the file says.
+inline Body<double> solid_body(const world::SceneSolid& d, int own) {
+    Body<double> b;
+    b.solid = own;
+    for (int i = 0; i < kSolidCount; ++i)
+        if (d.shape == kSolids[i].name) b.solid = i;
+    b.size = d.shape.empty() ? 1 : d.size;
+    const V3<double> p{d.position[0], d.position[1], d.position[2]}, v{d.velocity[0], d.velocity[1], d.velocity[2]};
+    b.at = {norm(p), unit(p)};
+    b.speed = norm(v), b.travel = unit(v);
+    b.spin = d.spin_deg * 3.14159265358979323846 / 180;
+    b.spin_axis = unit(V3<double>{d.spin_axis[0], d.spin_axis[1], d.spin_axis[2]}, {0, 0, 1});
+    b.color[0] = d.color.r, b.color[1] = d.color.g, b.color[2] = d.color.b;
+    return b;
+}
+
 inline Start<double> space_start(const world::Scene& scene) {
     Start<double> s;
     s.K = scene.curvature, s.R = scene.limit_radius, s.curvature_rate = scene.curvature_rate;
@@ -51,6 +71,11 @@ inline Start<double> space_start(const world::Scene& scene) {
     ship.frame = orthonormal(Frame<double>{unit(V3<double>{1, -0.2, -0.12}), {0, 0, 1}, {0, -1, 0}});
     ship.travel = ship.frame.forward;
     s.bodies.push_back(ship);
+    if (!scene.solids.empty()) {  // (a scene file's: its own, numbered after the five)
+        int own = kSolidCount;
+        for (const world::SceneSolid& d : scene.solids) s.bodies.push_back(solid_body(d, d.shape.empty() ? own++ : 0));
+        return s;
+    }
     static constexpr uint8_t kColors[5][3] = {{255, 200, 64}, {64, 220, 120}, {120, 160, 255}, {230, 120, 230}, {120, 230, 230}};
     Sequence q;
     for (int i = 0; i < kSpaceBodies; ++i) {
@@ -74,6 +99,18 @@ class SceneWorld : public World<double> {
 public:
     explicit SceneWorld(const world::Scene& scene) : World<double>(space_start(scene)), scene_(scene) {
         if (scene.honeycomb_cells) honeycomb_.set(scene.honeycomb_cells == 3 ? kEightCell : kOrder5Cubic);
+        for (const world::SceneSolid& d : scene.solids)
+            if (d.shape.empty()) own_.push_back(OwnShape::of(d));
+        for (const OwnShape& o : own_)  // (after every push: the pointers stay)
+            own_solids_.push_back({o.name.c_str(), static_cast<int>(o.lengths.size()), o.edge_count, 0, o.directions.get(),
+                                   o.edges.get(), o.lengths.data()});
+    }
+    SceneWorld(const SceneWorld&) = delete;  // (its solids' names point into its own storage)
+    SceneWorld& operator=(const SceneWorld&) = delete;
+
+    // A body's shape: one of the five, or a scene file's own.
+    const Solid& solid(const Body<double>& b) const {
+        return b.solid < kSolidCount ? kSolids[b.solid] : own_solids_[static_cast<std::size_t>(b.solid - kSolidCount)];
     }
 
     const world::Scene& scene() const { return scene_; }
@@ -102,7 +139,33 @@ public:
     ZoomReading zoom() const { return {}; }
 
 private:
+    struct OwnShape {  // a scene file's solid of its own: unit directions, lengths, edges (in the
+                       // arrays a Solid points to; held on the heap, so they stay where they are)
+        std::string name;
+        std::unique_ptr<double[][3]> directions;
+        std::vector<double> lengths;
+        std::unique_ptr<uint8_t[][2]> edges;
+        int edge_count = 0;
+        static OwnShape of(const world::SceneSolid& d) {
+            OwnShape o;
+            o.name = d.name;
+            o.directions.reset(new double[d.vertices.size()][3]);
+            for (std::size_t i = 0; i < d.vertices.size(); ++i) {
+                const V3<double> x{d.vertices[i][0], d.vertices[i][1], d.vertices[i][2]};
+                const V3<double> u = unit(x);
+                o.directions[i][0] = u.x, o.directions[i][1] = u.y, o.directions[i][2] = u.z;
+                o.lengths.push_back(norm(x));
+            }
+            o.edge_count = static_cast<int>(d.edges.size());
+            o.edges.reset(new uint8_t[d.edges.size()][2]);
+            for (std::size_t i = 0; i < d.edges.size(); ++i)
+                o.edges[i][0] = static_cast<uint8_t>(d.edges[i][0]), o.edges[i][1] = static_cast<uint8_t>(d.edges[i][1]);
+            return o;
+        }
+    };
     world::Scene scene_;
+    std::vector<OwnShape> own_;
+    std::vector<Solid> own_solids_;
     std::vector<Gauge> gauges_;
     Honeycomb honeycomb_;
     world::Game<double> game_;

@@ -8,6 +8,7 @@
 // the body's centre (geometry.hpp); local vertex angles are measured from the facing.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -148,6 +149,21 @@ struct Zoom {
     bool on() const { return !levels.empty(); }
 };
 
+// A three-dimensional scene's solid ([[solid]] in a scene file; src/space makes it a body): one of
+// the Platonic solids by name, or its own vertices (in its frame, x forward, y left, z up, world
+// units: each walked out from the centre along its direction by its length) and edges.
+struct SceneSolid {
+    std::string name;
+    std::string shape;                         // "tetrahedron" ... "icosahedron", or "" for its own
+    double size = 0.2;                         // a named shape's circumradius
+    std::vector<std::array<double, 3>> vertices;
+    std::vector<std::array<int, 2>> edges;
+    double position[3] = {1, 0, 0};            // its centre: r u, in the map's coordinates
+    double velocity[3] = {0, 0, 0};            // its speed times its direction of travel, carried
+    double spin_deg = 0, spin_axis[3] = {0, 0, 1};  // degrees a second about an axis of its frame
+    Rgb color{220, 225, 235};
+};
+
 struct Scene {
     std::string name;
     double curvature = 0;
@@ -163,6 +179,7 @@ struct Scene {
     std::vector<MeasureDecl> measures;  // instruments shown from the start (the live one is extra)
     std::vector<SceneBump> bumps;  // any: the world is uneven (src/uneven)
     bool space = false;            // a three-dimensional world (src/space; its bodies made there)
+    std::vector<SceneSolid> solids;  // its solids (none: the space scene's dozen)
     int honeycomb_cells = 0;       // and in it a honeycomb of cubes, this many round an edge
                                    // (3: the 8-cell, 5: {4,3,5}); 0: none, the polyhedra
     double strength_rate = 0.5;    // the bumps' strength keys: their gain changes this much a second

@@ -48,8 +48,9 @@ std::vector<Dumped> read_bodies(const std::string& line, double& t, double& K) {
     return out;
 }
 
-std::unique_ptr<app::Session> space_session(app::Options o = app::defaults(app::Command::render)) {
-    o.scene = "space";
+std::unique_ptr<app::Session> space_session(const std::string& name = "space") {
+    app::Options o = app::defaults(app::Command::render);
+    o.scene = name;
     const world::Scene scene = app::load_scene(o);
     const kinds::KindChoice kind = app::world_kind(o, scene);
     return app::make_session(kind, scene, app::session_options(o, scene, o.legend, kind), render::builtin_font(), nullptr);
@@ -155,6 +156,57 @@ TEST(SpaceSession, BothViewsDrawAndTheMapHoldsTheWorldInItsBall) {
             s->advance(none);
         }
     }
+}
+
+// A scene file's own solid (tests/files/data/solids.toml): each vertex where the file puts it in
+// the solid's frame — at its length from the centre, and at the flat angle from every other as
+// seen from the centre (the exponential map keeps both), measured in the embedding at the file's
+// K = -0.5; the dump names it and its centre coasts along its geodesic.
+TEST(SpaceSession, AScenesOwnSolidIsPlacedAsItsFileSays) {
+    app::Options o = app::defaults(app::Command::render);
+    o.scene = NONEUCLID_SOURCE_DIR "/tests/files/data/solids.toml";
+    const world::Scene scene = app::load_scene(o);
+    ASSERT_TRUE(scene.space);
+    space::SceneWorld w(scene);
+    const space::Body<double>& prism = w.bodies[1];
+    const space::Solid& shape = w.solid(prism);
+    EXPECT_STREQ(shape.name, "prism");
+    ASSERT_EQ(shape.vertex_count, 6);
+    const LD K = w.K;
+    const R4 centre = embed(K, prism.at);
+    LD worst_length = 0, worst_angle = 0;
+    for (int i = 0; i < 6; ++i) {
+        const auto& v = scene.solids[0].vertices[static_cast<std::size_t>(i)];
+        const R4 p = embed(K, space::vertex_of(w.K, prism.at, prism.frame, shape, i, prism.size));
+        worst_length = std::max(worst_length, std::fabs(ref_distance(K, centre, p) - std::hypot(v[0], std::hypot(v[1], v[2]))));
+        for (int j = 0; j < i; ++j) {
+            const auto& u = scene.solids[0].vertices[static_cast<std::size_t>(j)];
+            const R4 q = embed(K, space::vertex_of(w.K, prism.at, prism.frame, shape, j, prism.size));
+            // (the angle at the centre between the geodesics to p and q: their tangents there)
+            const R4 tp = p - form(K, centre, p) * centre, tq = q - form(K, centre, q) * centre;
+            const LD seen = std::acos(g(K, tp, tq) / std::sqrt(g(K, tp, tp) * g(K, tq, tq)));
+            const LD flat = std::acos((v[0] * u[0] + v[1] * u[1] + v[2] * u[2]) /
+                                      (std::hypot(v[0], std::hypot(v[1], v[2])) * std::hypot(u[0], std::hypot(u[1], u[2]))));
+            worst_angle = std::max(worst_angle, std::fabs(seen - flat));
+        }
+    }
+    EXPECT_LT(worst_length, 1e-12);
+    EXPECT_LT(worst_angle, 1e-9);
+    EXPECT_EQ(shape.edge_count, 9);
+    const auto s = space_session(o.scene);
+    app::ScriptPlayer none;
+    s->start(none);
+    for (int f = 0; f < 120; ++f) s->advance(none);
+    std::string line;
+    s->dump(800, 480, line);
+    double t = 0, dK = 0;
+    const std::vector<Dumped> got = read_bodies(line, t, dK);
+    ASSERT_EQ(got.size(), 3u);
+    EXPECT_STREQ(got[1].solid, "prism");
+    EXPECT_STREQ(got[2].solid, "cube");
+    const LD dist = prism.speed * t;
+    const R4 want = C(K, dist) * centre + S(K, dist) * tangent(K, prism.at, prism.travel);
+    EXPECT_LT(near_distance(K, want, embed(K, Point<double>{got[1].r, {got[1].dir[0], got[1].dir[1], got[1].dir[2]}})), 1e-7);
 }
 
 // Attract mode in the 3D world: after a second with no input the autopilot flies a tour — it

@@ -105,6 +105,42 @@ TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
     EXPECT_EQ(err.to_string().rfind("/nonexistent/scene.toml: the scene file: cannot read it", 0), 0u) << err.to_string();
 }
 
+// [[solid]] tables: a three-dimensional scene (tests/files/data/solids.toml loads, its solids as
+// written), and each mistake in one sentence at its place.
+TEST(SceneFile, SolidTablesMakeAThreeDimensionalScene) {
+    Scene s;
+    SceneError err;
+    ASSERT_TRUE(load_scene_file(NONEUCLID_SOURCE_DIR "/tests/files/data/solids.toml", s, err)) << err.to_string();
+    EXPECT_TRUE(s.space);
+    ASSERT_EQ(s.solids.size(), 2u);
+    EXPECT_EQ(s.solids[0].name, "prism");
+    EXPECT_EQ(s.solids[0].vertices.size(), 6u);
+    EXPECT_EQ(s.solids[0].edges.size(), 9u);
+    EXPECT_EQ(s.solids[0].edges[8][0], 2);
+    EXPECT_EQ(s.solids[0].spin_deg, 30);
+    EXPECT_EQ(s.solids[1].shape, "cube");
+    EXPECT_EQ(s.solids[1].size, 0.25);
+    const BadCase cases[] = {
+        {"[[solid]]\nname = \"a\"\n", 1, 1, "solid 'a': give either shape = \"tetrahedron\""},
+        {"[[solid]]\nshape = \"sphere\"\n", 2, 9, "expected shape = \"tetrahedron\", \"cube\""},
+        {"[[solid]]\nshape = \"cube\"\nvertices = [[0, 0, 1]]\n", 1, 1, "not both or neither"},
+        {"[[solid]]\nvertices = [[0, 0, 1], [1, 0]]\nedges = [[0, 1]]\n", 2, 24, "expected 'vertices' = [x, y, z]"},
+        {"[[solid]]\nvertices = [[0, 0, 1], [1, 0, 0]]\nedges = [[0, 2]]\n", 3, 10, "two different vertex numbers from 0 to 1"},
+        {"[[solid]]\nvertices = [[0, 0, 1], [1, 0, 0]]\n", 1, 1, "expected 'edges' = [[i, j], ...]"},
+        {"[[solid]]\nshape = \"cube\"\nspin_axis = [0, 0, 0]\n", 3, 13, "'spin_axis' must not be [0, 0, 0]"},
+        {"[[solid]]\nshape = \"cube\"\nposition = [1000, 0, 0]\n", 3, 13, "'position' must be from -100 to 100"},
+        {"[[solid]]\nname = \"a\\\"b\"\nshape = \"cube\"\n", 1, 1, "expected a 'name' of 1 to 40 letters"},
+        {"[[body]]\nvertices = [[0.1, 0]]\n[[solid]]\nshape = \"cube\"\n", 1, 1, "'body' belongs to the plane"},
+    };
+    for (const BadCase& c : cases) {
+        Scene bad;
+        EXPECT_FALSE(parse_scene(c.text, "s.toml", bad, err)) << c.text;
+        EXPECT_EQ(err.line, c.line) << c.text << " -> " << err.to_string();
+        EXPECT_EQ(err.column, c.column) << c.text << " -> " << err.to_string();
+        EXPECT_NE(err.message.find(c.says), std::string::npos) << c.text << " -> " << err.to_string();
+    }
+}
+
 TEST(SceneFile, GridsAndExtensions) {
     Scene s;
     SceneError err;
