@@ -97,9 +97,9 @@ nw_status make_world(const char* function, world::Scene& scene, world::EngineKin
         return fail(NW_ERR_SCENE, std::string(function) + ": the scene: " + why + ".");
     kinds::KindChoice kind;  // (its kind is chosen whether or not it has the engine)
     const bool has_engine = kinds::choose_kind(scene, &engine, kind, why);
-    if (!kinds::kind_can(kind.kind).c_interface)  // (the uneven world: not in this interface's version yet)
-        return fail(NW_ERR_SCENE, std::string(function) + ": the scene has bumps, " + kinds::kind_help(kind.kind) +
-                                      ", which this interface does not run yet: use a scene without [[bump]] tables.");
+    if (!kinds::kind_can(kind.kind).c_interface)  // (the uneven and 3D worlds: not in this interface's version yet)
+        return fail(NW_ERR_SCENE, std::string(function) + ": the scene is " + kinds::kind_help(kind.kind) +
+                                      ", which this interface does not run yet: use a scene of constant K in the plane.");
     if (!has_engine)
         return fail(NW_ERR_SCENE, std::string(function) + ": " + why + ".");
     auto w = std::make_unique<nw_world>();

@@ -69,7 +69,8 @@ inline constexpr std::tuple kKindTable{
         "uneven", "a world whose curvature varies from place to place (a scene with [[bump]] tables, docs/uneven.md)",
         uneven_accepts, {}},
     KindRow<On<world::engine_named("double"), Space>>{
-        "space", "a three-dimensional space of constant curvature K (the space scene, docs/space.md)", space_accepts, {}},
+        "space", "a three-dimensional space of constant curvature K (the space, 8-cell and order-5-cubic scenes, or [[solid]] "
+        "tables; docs/space.md)", space_accepts, {}},
 };
 using KindTable = std::remove_const_t<decltype(kKindTable)>;
 inline constexpr std::size_t kKindCount = std::tuple_size_v<KindTable>;

@@ -122,7 +122,10 @@ TEST(CApi, BadInputIsAStatusAndASentence) {
     EXPECT_EQ(nw_world_from_name("kiosk", nullptr, nullptr), NW_ERR_NULL);
     expect_sentence("nw_world_from_name");
     EXPECT_EQ(nw_world_from_name("lens", nullptr, &w), NW_ERR_SCENE);  // an uneven world: not here yet
-    EXPECT_NE(std::string(nw_last_error()).find("has bumps"), std::string::npos) << nw_last_error();
+    EXPECT_NE(std::string(nw_last_error()).find("with [[bump]] tables"), std::string::npos) << nw_last_error();
+    EXPECT_EQ(nw_world_from_name("space", nullptr, &w), NW_ERR_SCENE);  // the 3D world: not here yet
+    EXPECT_NE(std::string(nw_last_error()).find("a three-dimensional space"), std::string::npos) << nw_last_error();
+    expect_sentence("nw_world_from_name");
 
     const char bad[] = "curvature = 2.0\n";
     EXPECT_EQ(nw_world_from_text(bad, sizeof bad - 1, nullptr, &w), NW_ERR_SCENE);
