@@ -78,7 +78,11 @@ void read_solid(const toml::table& t, int index, world::Scene& s) {
             b.edges.push_back({static_cast<int>(at(0)), static_cast<int>(at(1))});
         }
     }
-    if (const toml::node* n = t.get("position")) triple(r, *n, "position", b.position, kReach, "its centre, world units", context);
+    if (const toml::node* n = t.get("position")) {
+        triple(r, *n, "position", b.position, kReach, "its centre, world units", context);
+        if (std::hypot(b.position[0], std::hypot(b.position[1], b.position[2])) > s.limit_radius)
+            throw Bad{n->source(), context + "'position' must lie within limit_radius of O: move it nearer, or raise limit_radius"};
+    }
     if (const toml::node* n = t.get("velocity")) triple(r, *n, "velocity", b.velocity, 10, "world units a second", context);
     if (const toml::node* n = t.get("spin_axis")) {
         triple(r, *n, "spin_axis", b.spin_axis, kReach, "an axis in its frame", context);

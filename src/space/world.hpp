@@ -139,9 +139,14 @@ private:
         b.frame = orthonormal(Frame<T>{turned(b.frame.forward, axis, angle), turned(b.frame.up, axis, angle),
                                        turned(b.frame.right, axis, angle)});
     }
+    // (Repeated, for a body that K's turn left more than once round: at K > 0 the limit can
+    // shrink to pi / sqrt K under a body far out; each pass brings it 2R nearer.)
     void settle(Body<T>& b) const {
         const T R = limit();
-        if (b.at.r > R) b.at = {T(2) * R - b.at.r, T(-1) * b.at.u};
+        while (b.at.r > R) {
+            b.at = {T(2) * R - b.at.r, T(-1) * b.at.u};
+            if (b.at.r < T(0)) b.at = {T(-1) * b.at.r, T(-1) * b.at.u};
+        }
     }
 
     Start<T> start_;

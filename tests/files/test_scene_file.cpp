@@ -129,6 +129,7 @@ TEST(SceneFile, SolidTablesMakeAThreeDimensionalScene) {
         {"[[solid]]\nvertices = [[0, 0, 1], [1, 0, 0]]\n", 1, 1, "expected 'edges' = [[i, j], ...]"},
         {"[[solid]]\nshape = \"cube\"\nspin_axis = [0, 0, 0]\n", 3, 13, "'spin_axis' must not be [0, 0, 0]"},
         {"[[solid]]\nshape = \"cube\"\nposition = [1000, 0, 0]\n", 3, 13, "'position' must be from -100 to 100"},
+        {"limit_radius = 2\n[[solid]]\nshape = \"cube\"\nposition = [2, 1, 0]\n", 4, 12, "must lie within limit_radius"},
         {"[[solid]]\nname = \"a\\\"b\"\nshape = \"cube\"\n", 1, 1, "expected a 'name' of 1 to 40 letters"},
         {"[[body]]\nvertices = [[0.1, 0]]\n[[solid]]\nshape = \"cube\"\n", 1, 1, "'body' belongs to the plane"},
     };

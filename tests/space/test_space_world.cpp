@@ -226,6 +226,23 @@ TEST(SpaceWorld, WithFireHeldTheKiosksButtonsRollAndPitch) {
     }
 }
 
+// A body far out when the limit shrinks under it (K > 0: the limit is pi / sqrt K): it settles
+// on the same point of S³, read within the limit, however many times round that is.
+TEST(SpaceWorld, ABodyPastTheAntipodeSettlesOnTheSamePoint) {
+    for (const double r : {3.5, 10.0, 40.0}) {
+        space::Start<double> s;
+        s.K = 1, s.R = 50;
+        space::Body<double> b;
+        b.at = {r, space::unit(V3<double>{0.3, -1, 0.2})};
+        s.bodies.push_back(b);
+        space::World<double> w(s);
+        w.step(kDt);
+        EXPECT_LE(w.bodies[0].at.r, 3.14159265358979323846) << r;
+        EXPECT_GE(w.bodies[0].at.r, 0.0) << r;
+        EXPECT_LT(near_distance(1, embed(1, b.at), embed(1, w.bodies[0].at)), 1e-12) << r;
+    }
+}
+
 // The curvature keys turn K at the scene's rate within [-1, 1], the presets set it, reset restores
 // the start.
 TEST(SpaceWorld, TheCurvatureActionsTurnKWhileItFlies) {
