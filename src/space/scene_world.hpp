@@ -131,12 +131,7 @@ public:
     bool measuring() const { return false; }
     void place_mark(geo::Polar<double>) {}
     const world::Game<double>& game() const { return game_; }  // (off)
-    struct ZoomReading {
-        bool on = false;
-        double z = 1;
-        bool least = false, most = false;
-    };
-    ZoomReading zoom() const { return {}; }
+    world::ZoomReading zoom() const { return {}; }  // (no zoom)
 
 private:
     struct OwnShape {  // a scene file's solid of its own: unit directions, lengths, edges (in the

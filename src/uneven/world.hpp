@@ -108,12 +108,7 @@ public:
     // A mark of the live triangle at `at` (a tap on the web page), turning it on if it is off.
     void place_mark(geo::Polar<double> at);
     // What a session asks of every world: no zoom here.
-    struct ZoomReading {
-        bool on = false;
-        double z = 1;
-        bool least = false, most = false;
-    };
-    ZoomReading zoom() const { return {}; }
+    world::ZoomReading zoom() const { return {}; }
 
 private:
     void set_curvature(double k);

@@ -148,6 +148,13 @@ struct Zoom {
     static constexpr double kStep = 31.0 / 32;
     bool on() const { return !levels.empty(); }
 };
+// What every world reports of its zoom: z, and whether it is at either end of its range (on
+// false: the world has no zoom, or the scene none).
+struct ZoomReading {
+    bool on = false;
+    double z = 1;
+    bool least = false, most = false;
+};
 
 // A three-dimensional scene's solid ([[solid]] in a scene file; src/space makes it a body): one of
 // the Platonic solids by name, or its own vertices (in its frame, x forward, y left, z up, world

@@ -160,11 +160,6 @@ public:
     }
 
     // The zoom (Scene::zoom): z, and whether it is at either end of its range. Off: no zoom.
-    struct ZoomReading {
-        bool on = false;
-        double z = 1;
-        bool least = false, most = false;
-    };
     ZoomReading zoom() const {
         const Zoom& zm = scene_.zoom;
         return {zm.on(), zoom_, zm.on() && zoom_ <= zm.least, zm.on() && zoom_ >= zm.most};
