@@ -76,13 +76,4 @@ void fly(T K, Point<T>& p, V3<T>& travel, Frame<T>& f, T s) {
     f = orthonormal(Frame<T>{carry(w, f.forward), carry(w, f.up), carry(w, f.right)});
 }
 
-// The same for a body that travels where it faces (the frame's forward is the travel).
-template <class T>
-void fly(T K, Point<T>& p, Frame<T>& f, T s) {
-    V3<T> travel = f.forward;
-    fly(K, p, travel, f, s);
-    f.forward = travel;
-    f = orthonormal(f);
-}
-
 }  // namespace noneuclid::space

@@ -57,6 +57,18 @@ struct BadCase {
     long line, column;
     const char* says;
 };
+// The text is refused with the message at its line and column, "s.toml:LINE:COLUMN: ...".
+void expect_refused(const BadCase& c) {
+    Scene s;
+    SceneError err;
+    EXPECT_FALSE(parse_scene(c.text, "s.toml", s, err)) << c.text;
+    EXPECT_EQ(err.line, c.line) << c.text << " -> " << err.to_string();
+    EXPECT_EQ(err.column, c.column) << c.text << " -> " << err.to_string();
+    EXPECT_NE(err.message.find(c.says), std::string::npos) << c.text << " -> " << err.to_string();
+    EXPECT_EQ(err.to_string().rfind("s.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": ", 0), 0u)
+        << err.to_string();
+}
+
 TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
     const BadCase cases[] = {
         {"curvature = \n", 1, 13, "not valid TOML"},
@@ -89,16 +101,7 @@ TEST(SceneFile, EveryErrorNamesItsPlaceWhatWasExpectedAndWhatWasFound) {
         {"backdrop = \"earth\"\ncentre = 5\n", 2, 10, "expected 'centre' = [latitude, longitude in degrees]"},
         {"backdrop = \"earth\"\n[[grid]]\nkind = \"axes\"\n", 2, 1, "remove the [[grid]] tables, or the backdrop"},
     };
-    for (const BadCase& c : cases) {
-        Scene s;
-        SceneError err;
-        EXPECT_FALSE(parse_scene(c.text, "s.toml", s, err)) << c.text;
-        EXPECT_EQ(err.line, c.line) << c.text << " -> " << err.to_string();
-        EXPECT_EQ(err.column, c.column) << c.text << " -> " << err.to_string();
-        EXPECT_NE(err.message.find(c.says), std::string::npos) << c.text << " -> " << err.to_string();
-        EXPECT_EQ(err.to_string().rfind("s.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": ", 0), 0u)
-            << err.to_string();
-    }
+    for (const BadCase& c : cases) expect_refused(c);
     Scene s;
     SceneError err;
     EXPECT_FALSE(load_scene_file("/nonexistent/scene.toml", s, err));
@@ -133,13 +136,7 @@ TEST(SceneFile, SolidTablesMakeAThreeDimensionalScene) {
         {"[[solid]]\nname = \"a\\\"b\"\nshape = \"cube\"\n", 1, 1, "expected a 'name' of 1 to 40 letters"},
         {"[[body]]\nvertices = [[0.1, 0]]\n[[solid]]\nshape = \"cube\"\n", 1, 1, "'body' belongs to the plane"},
     };
-    for (const BadCase& c : cases) {
-        Scene bad;
-        EXPECT_FALSE(parse_scene(c.text, "s.toml", bad, err)) << c.text;
-        EXPECT_EQ(err.line, c.line) << c.text << " -> " << err.to_string();
-        EXPECT_EQ(err.column, c.column) << c.text << " -> " << err.to_string();
-        EXPECT_NE(err.message.find(c.says), std::string::npos) << c.text << " -> " << err.to_string();
-    }
+    for (const BadCase& c : cases) expect_refused(c);
 }
 
 TEST(SceneFile, GridsAndExtensions) {

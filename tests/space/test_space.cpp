@@ -106,7 +106,8 @@ TEST(Space, ALongFlightKeepsItsFrameAndCloses) {
         const space::Frame<double> f0 = f;
         const int steps = 10000;
         const double step = 2 * 3.14159265358979323846 / steps;
-        for (int i = 0; i < steps; ++i) space::fly(K, p, f, step);
+        V3<double> travel = f.forward;  // (it travels where it faces)
+        for (int i = 0; i < steps; ++i) space::fly(K, p, travel, f, step);
         EXPECT_NEAR(space::dot(f.forward, f.up), 0, 1e-14);
         EXPECT_NEAR(space::norm(f.forward), 1, 1e-14);
         EXPECT_NEAR(space::dot(space::cross(f.forward, f.up), f.right), 1, 1e-14);

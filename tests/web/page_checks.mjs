@@ -184,56 +184,44 @@ export async function pageChecks({browser, base, work, check, expect, sleep, wai
     });
   }
 
-  // An uneven world (src/uneven): the lens, its mass turned up with '.', the view switched with P;
-  // the canvas equals render of the run's recording, which holds the strength key's presses.
-  await check('?scene=lens: the strength key and the inhabitant\'s view; the canvas equals render of its recording', async () => {
-    const {page, started} = await open('scene=lens&size=400x300');
+  // Opens the page at `query`, holds each [key, code, keyCode, frames] for its frames, stops, and
+  // checks that the recording holds every pattern of `recorded` and that the canvas equals render
+  // of that recording (pictures and recording as NAME-page.png, NAME.rec, NAME-render.png).
+  async function keysMatchRender(query, keys, name, recorded) {
+    const {page, started} = await open(query);
     expect(started === true, 'the page did not start');
     await waitFrames(page, 3);
-    for (const [key, code, keyCode, frames] of [['.', 'Period', 190, 30], ['p', 'KeyP', 80, 2]]) {
+    for (const [key, code, keyCode, frames] of keys) {
       await page.key('keyDown', key, code, keyCode);
       await waitFrames(page, frames);
       await page.key('keyUp', key, code, keyCode);
       await waitFrames(page, 2);
     }
     await page.evaluate('window.noneuclid.stop()');
-    const shot = path.join(work, 'lens-page.png'), rec = path.join(work, 'lens.rec');
+    const shot = path.join(work, `${name}-page.png`), rec = path.join(work, `${name}.rec`);
     await canvasPng(page, shot);
     const text = await page.evaluate('window.noneuclid.recording()');
     fs.writeFileSync(rec, text);
-    expect(/press strength_up\n/.test(text) && /tap projection\n/.test(text), `the recording lacks the keys:\n${text.slice(0, 600)}`);
-    render(['--actions', rec, '--out', path.join(work, 'lens-render.png')]);
-    const same = pngDiff(shot, path.join(work, 'lens-render.png'));
+    expect(recorded.every((r) => r.test(text)), `the recording lacks the keys:\n${text.slice(0, 600)}`);
+    render(['--actions', rec, '--out', path.join(work, `${name}-render.png`)]);
+    const same = pngDiff(shot, path.join(work, `${name}-render.png`));
     expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
     expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
     await page.close();
-  });
+  }
+
+  // An uneven world (src/uneven): the lens, its mass turned up with '.', the view switched with P;
+  // the canvas equals render of the run's recording, which holds the strength key's presses.
+  await check('?scene=lens: the strength key and the inhabitant\'s view; the canvas equals render of its recording', () =>
+    keysMatchRender('scene=lens&size=400x300', [['.', 'Period', 190, 30], ['p', 'KeyP', 80, 2]], 'lens',
+                    [/press strength_up\n/, /tap projection\n/]));
 
   // The three-dimensional world (src/space): thrust, a pitch (I) and a roll (E), then P for the map;
   // the canvas equals render of the run's recording.
-  await check('?scene=space: thrust, pitch, roll and the map; the canvas equals render of its recording', async () => {
-    const {page, started} = await open('scene=space&size=400x300');
-    expect(started === true, 'the page did not start');
-    await waitFrames(page, 3);
-    for (const [key, code, keyCode, frames] of [['w', 'KeyW', 87, 20], ['i', 'KeyI', 73, 15], ['e', 'KeyE', 69, 15], ['p', 'KeyP', 80, 2]]) {
-      await page.key('keyDown', key, code, keyCode);
-      await waitFrames(page, frames);
-      await page.key('keyUp', key, code, keyCode);
-      await waitFrames(page, 2);
-    }
-    await page.evaluate('window.noneuclid.stop()');
-    const shot = path.join(work, 'space-page.png'), rec = path.join(work, 'space.rec');
-    await canvasPng(page, shot);
-    const text = await page.evaluate('window.noneuclid.recording()');
-    fs.writeFileSync(rec, text);
-    expect(/press pitch_up\n/.test(text) && /press roll_right\n/.test(text) && /tap projection\n/.test(text),
-           `the recording lacks the keys:\n${text.slice(0, 600)}`);
-    render(['--actions', rec, '--out', path.join(work, 'space-render.png')]);
-    const same = pngDiff(shot, path.join(work, 'space-render.png'));
-    expect(same.status === 0, `the page differs from render of its recording: ${same.out}`);
-    expect(page.problems.length === 0, `the console has errors:\n${page.problems.join('\n')}`);
-    await page.close();
-  });
+  await check('?scene=space: thrust, pitch, roll and the map; the canvas equals render of its recording', () =>
+    keysMatchRender('scene=space&size=400x300',
+                    [['w', 'KeyW', 87, 20], ['i', 'KeyI', 73, 15], ['e', 'KeyE', 69, 15], ['p', 'KeyP', 80, 2]], 'space',
+                    [/press pitch_up\n/, /press roll_right\n/, /tap projection\n/]));
 
   await check('?lang=xx is refused in one sentence; the page stays in English', async () => {
     const {page, started} = await open('lang=xx&scene=kiosk');
