@@ -25,14 +25,29 @@ inline render::Rgb dimmed(render::Rgb c, double depth, double near, double reach
     return {f(c.r), f(c.g), f(c.b)};
 }
 
-// The geodesic from p to q, walked at K, in the view `see`.
-template <class T, class View>
-void draw_edge(const render::Canvas& c, const View& see, T K, const Point<T>& p, const Point<T>& q, const EdgeStyle& s) {
-    const double step = (s.reach - s.near) / 16;  // (16 brightness steps between near and reach)
-    edge_pieces(see, K, p, q, step, [&](const Seen& a, const Seen& b) {
+// Each piece a line, dimmed by its depth.
+template <class Pieces>
+void draw_pieces(const render::Canvas& c, const EdgeStyle& s, Pieces&& pieces) {
+    pieces([&](const Seen& a, const Seen& b) {
         render::draw_line(c, geo::to_sub(a.x, a.y), geo::to_sub(b.x, b.y), dimmed(s.color, (a.depth + b.depth) / 2, s.near, s.reach),
                           s.line, true, render::held_rows(c));
     });
+}
+inline double depth_step(const EdgeStyle& s) { return (s.reach - s.near) / 16; }  // (16 brightness steps)
+
+// The geodesic from p to q (4-vectors of the world) in the inhabitant's view or the map.
+template <class T>
+void draw_edge(const render::Canvas& c, const EyeCamera<T>& see, const V4<T>& p, const V4<T>& q, const EdgeStyle& s) {
+    draw_pieces(c, s, [&](auto&& piece) { edge_pieces(see, p, q, depth_step(s), piece); });
+}
+template <class T>
+void draw_edge(const render::Canvas& c, const MapView<T>& see, T K, const V4<T>& p, const V4<T>& q, const EdgeStyle& s) {
+    draw_pieces(c, s, [&](auto&& piece) { edge_pieces(see, K, p, q, depth_step(s), piece); });
+}
+// The same, the edge given as two points.
+template <class T, class View>
+void draw_edge(const render::Canvas& c, const View& see, T K, const Point<T>& p, const Point<T>& q, const EdgeStyle& s) {
+    draw_pieces(c, s, [&](auto&& piece) { edge_pieces(see, K, p, q, depth_step(s), piece); });
 }
 
 }  // namespace noneuclid::space

@@ -30,24 +30,49 @@ inline MapView<double> map_camera(double limit, int width, int height, double si
     return orbit_camera(limit, d, 2 * 3.14159265358979323846 * t / 60, 0.35, lens);
 }
 
-// The grid's edges: three families of geodesics through a square lattice.
+// The grid's edges: three families of geodesics through a square lattice. Family a's line
+// through lattice point (i, j) starts at O, goes i steps along axis b, j along the carried axis c,
+// then 2.4 each way along the carried axis a; composing the three translations (space/
+// isometry.hpp) in closed form, with C_n, S_n the curvature's cosine and sine of n steps and
+// C_L, S_L of the reach: the point is (C_i C_j, a: 0, b: S_i C_j, c: S_j) and the line's ends
+// (C_i C_j C_L, a: +-S_L, b: S_i C_j C_L, c: S_j C_L).
 template <class Edge>
 void grid_edges(double K, render::Rgb grid, Edge&& edge) {
-    const Point<double> O{0, {1, 0, 0}};
-    const V3<double> axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    double C[kGridHalf + 1], S[kGridHalf + 1];
+    for (int n = 0; n <= kGridHalf; ++n) C[n] = geo::C_K(K, kGridStep * n), S[n] = geo::S_K(K, kGridStep * n);
+    const double CL = geo::C_K(K, kGridReach), SL = geo::S_K(K, kGridReach);
+    const auto at = [](int a, double w, double xa, double xb, double xc) {
+        double X[3];
+        X[a] = xa, X[(a + 1) % 3] = xb, X[(a + 2) % 3] = xc;
+        return V4<double>{w, X[0], X[1], X[2]};
+    };
     for (int a = 0; a < 3; ++a)
         for (int i = -kGridHalf; i <= kGridHalf; ++i)
             for (int j = -kGridHalf; j <= kGridHalf; ++j) {
-                // The lattice point: along the next axis i steps, then along the carried last one j.
-                const V3<double>& b = axes[(a + 1) % 3];
-                const V3<double>& c = axes[(a + 2) % 3];
-                const Walk<double> first = walk(K, O, b, kGridStep * i);
-                const Walk<double> second = walk(K, first.end, carry(first, c), kGridStep * j);
-                const V3<double> along = carry(second, carry(first, axes[a]));
-                const Point<double>& p = second.end;
-                edge(p, walk(K, p, along, kGridReach).end, grid);
-                edge(p, walk(K, p, -1.0 * along, kGridReach).end, grid);
+                const double ci = C[i < 0 ? -i : i], si = i < 0 ? -S[-i] : S[i];
+                const double cj = C[j < 0 ? -j : j], sj = j < 0 ? -S[-j] : S[j];
+                const V4<double> p = at(a, ci * cj, 0, si * cj, sj);
+                edge(p, at(a, ci * cj * CL, SL, si * cj * CL, sj * CL), grid);
+                edge(p, at(a, ci * cj * CL, -SL, si * cj * CL, sj * CL), grid);
             }
+}
+
+// The vertices of a solid of circumradius `size` placed by `to_world` (a body's or a cell's).
+struct PlacedSolid {
+    const Solid& s;
+    Iso<double> to_world;
+    double c = 1, sn = 0, size = 1, K = 0;  // C_K and S_K of the size, for a solid of one length
+    PlacedSolid(const Solid& solid, double k, const Point<double>& centre, const Frame<double>& f, double sz)
+        : s(solid), to_world(placement(k, centre, f)), c(geo::C_K(k, sz)), sn(geo::S_K(k, sz)), size(sz), K(k) {}
+    V4<double> vertex(int i) const {
+        const double* v = s.vertices[i];
+        if (s.lengths) return to_world(out_from_origin(K, V3<double>{v[0], v[1], v[2]}, size * s.lengths[i]));
+        return to_world(V4<double>{c, sn * v[0], sn * v[1], sn * v[2]});
+    }
+};
+template <class Edge>
+void solid_edges(const PlacedSolid& p, render::Rgb rgb, Edge& edge) {
+    for (int e = 0; e < p.s.edge_count; ++e) edge(p.vertex(p.s.edges[e][0]), p.vertex(p.s.edges[e][1]), rgb);
 }
 
 // Each body's edges (but the ship's when `ship` is false).
@@ -55,16 +80,14 @@ template <class Edge>
 void bodies_edges(const SceneWorld& w, bool ship, Edge&& edge) {
     for (const Body<double>& body : w.bodies) {
         if (body.ship && !ship) continue;
-        const Solid& s = w.solid(body);
         const render::Rgb rgb{body.color[0], body.color[1], body.color[2]};
-        for (int e = 0; e < s.edge_count; ++e)
-            edge(vertex_of(w.K, body.at, body.frame, s, s.edges[e][0], body.size),
-                 vertex_of(w.K, body.at, body.frame, s, s.edges[e][1], body.size), rgb);
+        solid_edges(PlacedSolid(w.solid(body), w.K, body.at, body.frame, body.size), rgb, edge);
     }
 }
 
-// Calls edge(p, q, rgb) for every edge of the world: the grid's or the honeycomb's, then each
-// body's (but the ship's when `ship` is false).
+// Calls edge(p, q, rgb) for every edge of the world (p, q 4-vectors of the world: space/
+// isometry.hpp): the grid's or the honeycomb's, then each body's (but the ship's when `ship` is
+// false).
 template <class Edge>
 void world_edges(SceneWorld& w, bool ship, Edge&& edge) {
     const double K = w.K;
@@ -72,9 +95,8 @@ void world_edges(SceneWorld& w, bool ship, Edge&& edge) {
     if (w.honeycomb_as_set().kind) {
         const Honeycomb& h = w.honeycomb();
         const render::Rgb cube{150, 170, 230};
-        const Solid& s = kSolids[1];
         for (int c = 0; c < h.count(); ++c)
-            for (int e = 0; e < s.edge_count; ++e) edge(h.vertex(c, s.edges[e][0]), h.vertex(c, s.edges[e][1]), cube);
+            solid_edges(PlacedSolid(kSolids[1], K, h.cell(c).centre, h.cell(c).frame, h.shape.circumradius), cube, edge);
     } else
         grid_edges(K, grid, edge);
     bodies_edges(w, ship, edge);
@@ -105,7 +127,7 @@ inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::Dra
     if (map) {
         const MapView<double> view = map_camera(limit, c.width(), c.height(), side, w.time);
         style.near = norm(view.camera) - limit, style.reach = norm(view.camera) + limit;
-        world_edges(w, true, [&](const Point<double>& p, const Point<double>& q, render::Rgb rgb) {
+        world_edges(w, true, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
             style.color = rgb;
             draw_edge(c, view, w.K, p, q, style);
         });
@@ -119,12 +141,13 @@ inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::Dra
     eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
     eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
     style.near = 0, style.reach = w.K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(w.K) : 2 * limit;
-    InhabitantView<double> around = eye;
+    const EyeCamera<double> direct = camera_of(eye);
+    EyeCamera<double> around = direct;
     around.around = true;
-    world_edges(w, false, [&](const Point<double>& p, const Point<double>& q, render::Rgb rgb) {
+    world_edges(w, false, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
         style.color = rgb;
-        draw_edge(c, eye, w.K, p, q, style);
-        if (w.K > 0) draw_edge(c, around, w.K, p, q, style);
+        draw_edge(c, direct, p, q, style);
+        if (w.K > 0) draw_edge(c, around, p, q, style);
     });
     porthole(c, side / 2, o, style.line);
 }

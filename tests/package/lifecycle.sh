@@ -46,6 +46,10 @@ unit_verifies() {
     echo "$out" >&2
     return 1
 }
+# The uids journald filed for the program's own lines (those it could name): exactly $1.
+journal_uids_are() {
+    [ "$(ct journalctl -u noneuclid _COMM=noneuclid -o export --no-pager | sed -n 's/^_UID=//p' | sort -u)" = "$1" ]
+}
 restarted() { [ "$(ct systemctl show -p NRestarts --value noneuclid)" -ge 1 ]; }
 runs_as() {  # runs_as PID UID GID...: the process's real uid and supplementary groups
     local status g
@@ -131,8 +135,10 @@ UNIT
     check "the kiosk reads /etc/noneuclid/board.toml over its board" journal_has "/etc/noneuclid/board.toml is read over it"
     local uid
     uid=$(ct id -u noneuclid)
-    check "the kiosk ran as noneuclid (uid $uid)" \
-        [ "$(ct journalctl -u noneuclid _COMM=noneuclid -o export --no-pager | sed -n 's/^_UID=//p' | sort -u)" = "$uid" ]
+    # journald reads a line's _COMM from /proc when it files the line; a kiosk that has already
+    # exited leaves its lines without one. Restart=always brings it back, so wait for a line
+    # filed while the kiosk lived rather than trusting the first start's timing.
+    check "the kiosk ran as noneuclid (uid $uid)" wait_for 30 journal_uids_are "$uid"
     check "systemd starts it again when it stops (Restart=always)" wait_for 10 restarted
 
     # Then a kiosk that keeps running: the headless display (small: it is not paced), through a

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "embedding.hpp"
+#include "space/view.hpp"
 #include "space/world.hpp"
 
 namespace {
