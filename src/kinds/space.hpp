@@ -19,13 +19,13 @@ class Space {
 public:
     using World = space::SceneWorld;
 
-    explicit Space(const world::Scene& scene) : world(scene) {}
+    explicit Space(const world::Scene& scene) : world(scene) { rows_.reserve(kKeptRows); }
 
     space::SceneWorld world;
 
     void prepare(const render::WorkerPool&) {}
     void draw(const render::Canvas& c, const render::DrawOptions& o, bool backdrop, render::WorkerPool&) {
-        space::draw_space(c, world, o, is_map(o.projection), backdrop);
+        space::draw_space(c, world, o, is_map(o.projection), backdrop, &rows_);
     }
 
     static bool is_map(geo::Projection p) { return p == geo::Projection::stereographic; }
@@ -85,6 +85,12 @@ public:
     }
     static bool aim(const World&, double&, double&) { return false; }  // (no game)
     static bool has_instrument(const World&) { return false; }        // (attract mode only flies)
+
+private:
+    // The backdrop's rows, kept from frame to frame (render/backdrop.hpp) for a canvas up to 4K's
+    // height; a taller one has them computed as drawn.
+    static constexpr int kKeptRows = 2160;
+    render::BackdropRows rows_;
 };
 
 }  // namespace noneuclid::kinds

@@ -16,7 +16,21 @@ struct EdgeStyle {
     double near = 0;                        // the depth drawn brightest
     double reach = 3.14159265358979323846;  // the depth drawn dimmest
     render::LineStyle line{};
+    double cx = 0, cy = 0, disc = 0;  // the circle the view shows through, px (disc 0: none)
 };
+
+// The part [t0, t1] of the segment a-b inside the circle (cx, cy, r); false if none.
+inline bool inside_circle(const Seen& a, const Seen& b, double cx, double cy, double r, double& t0, double& t1) {
+    const double dx = b.x - a.x, dy = b.y - a.y, ex = a.x - cx, ey = a.y - cy;
+    const double A = dx * dx + dy * dy, B = ex * dx + ey * dy, C = ex * ex + ey * ey - r * r;
+    t0 = 0, t1 = 1;
+    if (A <= 0) return C <= 0;
+    const double disc = B * B - A * C;  // (|a + t (b - a) - c|^2 = r^2: A t^2 + 2 B t + C = 0)
+    if (disc <= 0) return false;
+    const double root = std::sqrt(disc);
+    t0 = std::max(0.0, (-B - root) / A), t1 = std::min(1.0, (-B + root) / A);
+    return t0 < t1;
+}
 
 // `c` at the brightness of `depth`.
 inline render::Rgb dimmed(render::Rgb c, double depth, double near, double reach) {
@@ -25,12 +39,15 @@ inline render::Rgb dimmed(render::Rgb c, double depth, double near, double reach
     return {f(c.r), f(c.g), f(c.b)};
 }
 
-// Each piece a line, dimmed by its depth.
+// Each piece a line, dimmed by its depth, cut to the style's circle.
 template <class Pieces>
 void draw_pieces(const render::Canvas& c, const EdgeStyle& s, Pieces&& pieces) {
     pieces([&](const Seen& a, const Seen& b) {
-        render::draw_line(c, geo::to_sub(a.x, a.y), geo::to_sub(b.x, b.y), dimmed(s.color, (a.depth + b.depth) / 2, s.near, s.reach),
-                          s.line, true, render::held_rows(c));
+        double t0 = 0, t1 = 1;
+        if (s.disc > 0 && !inside_circle(a, b, s.cx, s.cy, s.disc, t0, t1)) return;
+        const auto at = [&](double t) { return geo::to_sub(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); };
+        render::draw_line(c, at(t0), at(t1), dimmed(s.color, (a.depth + b.depth) / 2, s.near, s.reach), s.line, true,
+                          render::held_rows(c));
     });
 }
 inline double depth_step(const EdgeStyle& s) { return (s.reach - s.near) / 16; }  // (16 brightness steps)

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 
+#include "render/backdrop.hpp"
 #include "render/draw_options.hpp"
 #include "space/draw.hpp"
 #include "space/scene_world.hpp"
@@ -115,41 +116,49 @@ inline void porthole(const render::Canvas& c, double r, const render::DrawOption
     render::draw_polyline(c, rim.data(), 97, false, o.rim, line, render::held_rows(c));
 }
 
-// The world in the inhabitant's view (map false) or the map, over the background (backdrop) or
-// what the canvas holds, within the disc of o.disc (0: the smaller side).
-inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::DrawOptions& o, bool map,
-                       bool backdrop) {
-    if (backdrop) c.clear(o.background);
+// The world in the inhabitant's view (map false) or the map, within the disc of o.disc (0: the
+// smaller side): over the backdrop (render/backdrop.hpp: the background inside the circle, the
+// outside shaded, the rim; its rows kept in `kept` when given) with each line cut to the circle,
+// or over what the canvas holds, shaded outside the circle afterwards.
+inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::DrawOptions& o, bool map, bool backdrop,
+                       render::BackdropRows* kept = nullptr) {
     EdgeStyle style;
     style.line.antialias = o.antialias, style.line.width = o.line_width;
     const double limit = w.limit();
     const double side = o.disc > 0 ? o.disc : (c.width() < c.height() ? c.width() : c.height());
+    MapView<double> view;
+    InhabitantView<double> eye;
     if (map) {
-        const MapView<double> view = map_camera(limit, c.width(), c.height(), side, w.time);
-        style.near = norm(view.camera) - limit, style.reach = norm(view.camera) + limit;
+        view = map_camera(limit, c.width(), c.height(), side, w.time);
+        const double d = norm(view.camera);
+        style.near = d - limit, style.reach = d + limit;
+        style.disc = view.lens.focal / std::sqrt(d * d / (limit * limit) - 1);  // (the ball's outline)
+    } else {
+        const Body<double>& ship = w.bodies.front();
+        eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
+        eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
+        style.near = 0, style.reach = w.K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(w.K) : 2 * limit;
+        style.disc = side / 2;
+    }
+    style.cx = c.width() / 2.0, style.cy = c.height() / 2.0;
+    const render::LimitCircle circle{style.cx, style.cy, style.disc};
+    if (backdrop) render::draw_backdrop_rows(c, circle, o, c.top(), c.bottom(), kept ? kept->rows(c, circle, o) : nullptr);
+    if (map) {
         world_edges(w, true, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
             style.color = rgb;
             draw_edge(c, view, w.K, p, q, style);
         });
-        // The limit sphere's outline: the circle the ball's edge makes on the screen.
-        const double d = norm(view.camera);
-        porthole(c, view.lens.focal / std::sqrt(d * d / (limit * limit) - 1), o, style.line);
-        return;
+    } else {
+        const EyeCamera<double> direct = camera_of(eye);
+        EyeCamera<double> around = direct;
+        around.around = true;
+        world_edges(w, false, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
+            style.color = rgb;
+            draw_edge(c, direct, p, q, style);
+            if (w.K > 0) draw_edge(c, around, p, q, style);
+        });
     }
-    const Body<double>& ship = w.bodies.front();
-    InhabitantView<double> eye;
-    eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
-    eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
-    style.near = 0, style.reach = w.K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(w.K) : 2 * limit;
-    const EyeCamera<double> direct = camera_of(eye);
-    EyeCamera<double> around = direct;
-    around.around = true;
-    world_edges(w, false, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
-        style.color = rgb;
-        draw_edge(c, direct, p, q, style);
-        if (w.K > 0) draw_edge(c, around, p, q, style);
-    });
-    porthole(c, side / 2, o, style.line);
+    if (!backdrop) porthole(c, style.disc, o, style.line);
 }
 
 }  // namespace noneuclid::space

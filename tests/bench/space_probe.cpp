@@ -41,6 +41,8 @@ int main(int argc, char** argv) {
     const render::Canvas c(back.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     const render::Canvas fb(front.data(), w, h, static_cast<std::ptrdiff_t>(w) * f.bytes_per_pixel(), f);
     render::DrawOptions o;
+    render::BackdropRows rows;  // (kept from frame to frame, as the kind keeps them)
+    rows.reserve(h);
     long frames = 0;
     auto frame = [&] {
         if (sweep) {  // (down for a second, up for a second: K always moving, never clamped long)
@@ -49,7 +51,7 @@ int main(int argc, char** argv) {
             world.press(down ? world::Action::curvature_down : world::Action::curvature_up);
         }
         world.step(1.0 / 60);
-        space::draw_space(c, world, o, map, true);
+        space::draw_space(c, world, o, map, true, &rows);
         render::copy_canvas(c, fb);
         ++frames;
     };
