@@ -68,7 +68,7 @@ inline constexpr std::tuple kKindTable{
     KindRow<On<world::engine_named("double"), Uneven>>{
         "uneven", "a world whose curvature varies from place to place (a scene with [[bump]] tables, docs/uneven.md)",
         uneven_accepts, {}},
-    KindRow<On<world::engine_named("double"), Space>>{
+    KindRow<On<world::engine_named("fixed"), SpaceOn<fx::fixed>>, On<world::engine_named("double"), SpaceOn<double>>>{
         "space", "a three-dimensional space of constant curvature K (the space, 8-cell and order-5-cubic scenes, or [[solid]] "
         "tables; docs/space.md)", space_accepts, {}},
 };

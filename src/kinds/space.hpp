@@ -1,5 +1,5 @@
 // The three-dimensional world (space/scene_world.hpp, docs/space.md) as a kind (kinds/kind.hpp):
-// double only, drawn on one thread (space/scene_draw.hpp) in its two views, P switching them —
+// on the fixed engine (Q16.16, the device's) and the double one, drawn on one thread (space/scene_draw.hpp) in its two views, P switching them —
 // the inhabitant's view (the projection setting's azimuthal equidistant, the default) and the
 // map (stereographic) — with the buttons and keys of the world of constant K, and dumped as each
 // body's distance, direction and facing (docs/file-formats.md).
@@ -15,13 +15,14 @@
 
 namespace noneuclid::kinds {
 
-class Space {
+template <class T>
+class SpaceOn {
 public:
-    using World = space::SceneWorld;
+    using World = space::SceneWorldOf<T>;
 
-    explicit Space(const world::Scene& scene) : world(scene) { rows_.reserve(kKeptRows); }
+    explicit SpaceOn(const world::Scene& scene) : world(scene) { rows_.reserve(kKeptRows); }
 
-    space::SceneWorld world;
+    World world;
 
     void prepare(const render::WorkerPool&) {}
     void draw(const render::Canvas& c, const render::DrawOptions& o, bool backdrop, render::WorkerPool&) {
@@ -42,13 +43,14 @@ public:
         const space::Honeycomb& h = world.honeycomb_as_set();
         if (!h.kind) return false;
         space::CubeShape shape;
-        if (!space::cube_shape(world.K, h.kind->edge, shape)) {
+        const double K = static_cast<double>(world.K);
+        if (!space::cube_shape(K, h.kind->edge, shape)) {
             std::snprintf(out, size, lang::text(lang::Text::honeycomb_none, l), h.kind->name, h.closing_K);
             return true;
         }
         const double gap = (2 * 3.14159265358979323846 - h.kind->cells * shape.dihedral) * 180 / 3.14159265358979323846;
         if (std::fabs(gap) < 0.05)
-            std::snprintf(out, size, lang::text(lang::Text::honeycomb_fits, l), h.kind->name, h.kind->cells, world.K);
+            std::snprintf(out, size, lang::text(lang::Text::honeycomb_fits, l), h.kind->name, h.kind->cells, K);
         else
             std::snprintf(out, size, lang::text(lang::Text::honeycomb_gap, l), h.kind->name, h.kind->cells, gap, h.closing_K);
         return true;
@@ -63,24 +65,25 @@ public:
     void dump(const files::DumpOptions&, std::string& line) const {
         char buf[256];
         std::snprintf(buf, sizeof buf, "{\"frame\":%ld,\"t\":%.9g,\"K\":%.9g,\"kind\":\"space\",\"bodies\":[", world.frame,
-                      world.time, world.K);
+                      world.time, static_cast<double>(world.K));
         line = buf;
         for (std::size_t i = 0; i < world.bodies.size(); ++i) {
-            const space::Body<double>& b = world.bodies[i];
-            const space::V3<double>& u = b.at.u;
-            const space::V3<double>& f = b.frame.forward;
+            const space::Body<T>& b = world.bodies[i];
+            const auto d = [](T v) { return static_cast<double>(v); };
+            const space::V3<T>& u = b.at.u;
+            const space::V3<T>& f = b.frame.forward;
             std::snprintf(buf, sizeof buf,
                           "%s{\"kind\":\"%s\",\"solid\":\"%s\",\"r\":%.9g,\"dir\":[%.9g,%.9g,%.9g],"
                           "\"facing\":[%.9g,%.9g,%.9g],\"speed\":%.9g}",
-                          i ? "," : "", b.ship ? "ship" : "body", world.solid(b).name, b.at.r, u.x, u.y, u.z,
-                          f.x, f.y, f.z, b.speed);
+                          i ? "," : "", b.ship ? "ship" : "body", world.solid(b).name, d(b.at.r), d(u.x), d(u.y), d(u.z),
+                          d(f.x), d(f.y), d(f.z), d(b.speed));
             line += buf;
         }
         line += "]}";
     }
 
     static bool ship_speed(const World& w, double& speed) {
-        speed = w.bodies.front().speed;
+        speed = static_cast<double>(w.bodies.front().speed);
         return true;
     }
     static bool aim(const World&, double&, double&) { return false; }  // (no game)
@@ -92,5 +95,6 @@ private:
     static constexpr int kKeptRows = 2160;
     render::BackdropRows rows_;
 };
+using Space = SpaceOn<double>;
 
 }  // namespace noneuclid::kinds

@@ -124,7 +124,7 @@ Seen seen_by_eye(const EyeCamera<T>& e, const V4<T>& p, const V4<T>& q, double t
     Seen s;
     s.shown = sign * f > 0;
     s.x = e.lens.cx + to_screen * sign * r, s.y = e.lens.cy - to_screen * sign * u;
-    const double d = static_cast<double>(polar_of(e.K, y).r);
+    const double d = static_cast<double>(distance_of(e.K, y));
     s.depth = e.around ? e.antipode - d : d;
     return s;
 }

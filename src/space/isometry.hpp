@@ -107,6 +107,13 @@ struct Polar4 {
     V3<T> u;
     T s{}, c{};  // S_K(r) and C_K(r)
 };
+// Only its distance (the inhabitant's view's depth: no direction, no division for it).
+template <class T>
+T distance_of(T K, const V4<T>& y) {
+    using std::sqrt;
+    const T x2 = y.x * y.x + y.y * y.y + y.z * y.z, n = sqrt(y.w * y.w + K * x2);
+    return geo::arc_K(K, sqrt(x2) / n, y.w / n);
+}
 template <class T>
 Polar4<T> polar_of(T K, const V4<T>& y) {
     using std::sqrt;

@@ -24,11 +24,13 @@ inline constexpr int kGridHalf = 2;  // lattice points -2..2 each way
 
 // The map's camera at world time t: 2.6 limits out, 20 degrees up, a turn a minute; the ball
 // 80% of the disc (`side`) across.
-inline MapView<double> map_camera(double limit, int width, int height, double side, double t) {
+template <class T = double>
+MapView<T> map_camera(double limit, int width, int height, double side, double t) {
     const double d = 2.6 * limit;
     const double tan_radius = 1 / std::sqrt(d * d / (limit * limit) - 1);  // tan of the ball's angular radius
     const Lens lens{width / 2.0, height / 2.0, 0.4 * side / tan_radius};
-    return orbit_camera(limit, d, 2 * 3.14159265358979323846 * t / 60, 0.35, lens);
+    const MapView<double> o = orbit_camera(limit, d, 2 * 3.14159265358979323846 * t / 60, 0.35, lens);
+    return {T(limit), o.camera, o.frame, o.lens};
 }
 
 // The grid's edges: three families of geodesics through a square lattice. Family a's line
@@ -37,67 +39,78 @@ inline MapView<double> map_camera(double limit, int width, int height, double si
 // isometry.hpp) in closed form, with C_n, S_n the curvature's cosine and sine of n steps and
 // C_L, S_L of the reach: the point is (C_i C_j, a: 0, b: S_i C_j, c: S_j) and the line's ends
 // (C_i C_j C_L, a: +-S_L, b: S_i C_j C_L, c: S_j C_L).
-template <class Edge>
-void grid_edges(double K, render::Rgb grid, Edge&& edge) {
-    double C[kGridHalf + 1], S[kGridHalf + 1];
-    for (int n = 0; n <= kGridHalf; ++n) C[n] = geo::C_K(K, kGridStep * n), S[n] = geo::S_K(K, kGridStep * n);
-    const double CL = geo::C_K(K, kGridReach), SL = geo::S_K(K, kGridReach);
-    const auto at = [](int a, double w, double xa, double xb, double xc) {
-        double X[3];
+template <class T, class Edge>
+void grid_edges(T K, render::Rgb grid, Edge&& edge) {
+    T C[kGridHalf + 1], S[kGridHalf + 1];
+    for (int n = 0; n <= kGridHalf; ++n) C[n] = geo::C_K(K, T(kGridStep * n)), S[n] = geo::S_K(K, T(kGridStep * n));
+    const T CL = geo::C_K(K, T(kGridReach)), SL = geo::S_K(K, T(kGridReach));
+    const auto at = [](int a, T w, T xa, T xb, T xc) {
+        T X[3];
         X[a] = xa, X[(a + 1) % 3] = xb, X[(a + 2) % 3] = xc;
-        return V4<double>{w, X[0], X[1], X[2]};
+        return V4<T>{w, X[0], X[1], X[2]};
     };
     for (int a = 0; a < 3; ++a)
         for (int i = -kGridHalf; i <= kGridHalf; ++i)
             for (int j = -kGridHalf; j <= kGridHalf; ++j) {
-                const double ci = C[i < 0 ? -i : i], si = i < 0 ? -S[-i] : S[i];
-                const double cj = C[j < 0 ? -j : j], sj = j < 0 ? -S[-j] : S[j];
-                const V4<double> p = at(a, ci * cj, 0, si * cj, sj);
+                const T ci = C[i < 0 ? -i : i], si = i < 0 ? T(-1) * S[-i] : S[i];
+                const T cj = C[j < 0 ? -j : j], sj = j < 0 ? T(-1) * S[-j] : S[j];
+                const V4<T> p = at(a, ci * cj, T(0), si * cj, sj);
                 edge(p, at(a, ci * cj * CL, SL, si * cj * CL, sj * CL), grid);
-                edge(p, at(a, ci * cj * CL, -SL, si * cj * CL, sj * CL), grid);
+                edge(p, at(a, ci * cj * CL, T(-1) * SL, si * cj * CL, sj * CL), grid);
             }
 }
 
 // The vertices of a solid of circumradius `size` placed by `to_world` (a body's or a cell's).
+template <class T>
 struct PlacedSolid {
     const Solid& s;
-    Iso<double> to_world;
-    double c = 1, sn = 0, size = 1, K = 0;  // C_K and S_K of the size, for a solid of one length
-    PlacedSolid(const Solid& solid, double k, const Point<double>& centre, const Frame<double>& f, double sz)
+    Iso<T> to_world;
+    T c{}, sn{}, size{}, K{};  // C_K and S_K of the size, for a solid of one length
+    PlacedSolid(const Solid& solid, T k, const Point<T>& centre, const Frame<T>& f, T sz)
         : s(solid), to_world(placement(k, centre, f)), c(geo::C_K(k, sz)), sn(geo::S_K(k, sz)), size(sz), K(k) {}
-    V4<double> vertex(int i) const {
+    V4<T> vertex(int i) const {
         const double* v = s.vertices[i];
-        if (s.lengths) return to_world(out_from_origin(K, V3<double>{v[0], v[1], v[2]}, size * s.lengths[i]));
-        return to_world(V4<double>{c, sn * v[0], sn * v[1], sn * v[2]});
+        const V3<T> d{T(v[0]), T(v[1]), T(v[2])};
+        if (s.lengths) return to_world(out_from_origin(K, d, size * T(s.lengths[i])));
+        return to_world(V4<T>{c, sn * d.x, sn * d.y, sn * d.z});
     }
 };
-template <class Edge>
-void solid_edges(const PlacedSolid& p, render::Rgb rgb, Edge& edge) {
-    for (int e = 0; e < p.s.edge_count; ++e) edge(p.vertex(p.s.edges[e][0]), p.vertex(p.s.edges[e][1]), rgb);
+// (Each vertex placed once, not once for each of its edges; a solid has at most 256: its edges'
+// indices are bytes.)
+template <class T, class Edge>
+void solid_edges(const PlacedSolid<T>& p, render::Rgb rgb, Edge& edge) {
+    V4<T> at[256];
+    const int n = p.s.vertex_count < 256 ? p.s.vertex_count : 256;
+    for (int i = 0; i < n; ++i) at[i] = p.vertex(i);
+    for (int e = 0; e < p.s.edge_count; ++e) edge(at[p.s.edges[e][0]], at[p.s.edges[e][1]], rgb);
 }
 
 // Each body's edges (but the ship's when `ship` is false).
-template <class Edge>
-void bodies_edges(const SceneWorld& w, bool ship, Edge&& edge) {
-    for (const Body<double>& body : w.bodies) {
+template <class T, class Edge>
+void bodies_edges(const SceneWorldOf<T>& w, bool ship, Edge&& edge) {
+    for (const Body<T>& body : w.bodies) {
         if (body.ship && !ship) continue;
         const render::Rgb rgb{body.color[0], body.color[1], body.color[2]};
-        solid_edges(PlacedSolid(w.solid(body), w.K, body.at, body.frame, body.size), rgb, edge);
+        solid_edges(PlacedSolid<T>(w.solid(body), w.K, body.at, body.frame, body.size), rgb, edge);
     }
 }
 
 // Calls edge(p, q, rgb) for every edge of the world (p, q 4-vectors of the world: space/
 // isometry.hpp): the grid's or the honeycomb's, then each body's (but the ship's when `ship` is
 // false).
-template <class Edge>
-void world_edges(SceneWorld& w, bool ship, Edge&& edge) {
-    const double K = w.K;
+template <class T, class Edge>
+void world_edges(SceneWorldOf<T>& w, bool ship, Edge&& edge) {
+    const T K = w.K;
     const render::Rgb grid{70, 90, 120};
     if (w.honeycomb_as_set().kind) {
         const Honeycomb& h = w.honeycomb();
         const render::Rgb cube{150, 170, 230};
-        for (int c = 0; c < h.count(); ++c)
-            solid_edges(PlacedSolid(kSolids[1], K, h.cell(c).centre, h.cell(c).frame, h.shape.circumradius), cube, edge);
+        for (int c = 0; c < h.count(); ++c) {
+            Body<double> d;
+            d.size = h.shape.circumradius, d.at = h.cell(c).centre, d.frame = h.cell(c).frame;
+            const Body<T> cell = body_in<T>(d);
+            solid_edges(PlacedSolid<T>(kSolids[1], K, cell.at, cell.frame, cell.size), cube, edge);
+        }
     } else
         grid_edges(K, grid, edge);
     bodies_edges(w, ship, edge);
@@ -120,42 +133,43 @@ inline void porthole(const render::Canvas& c, double r, const render::DrawOption
 // smaller side): over the backdrop (render/backdrop.hpp: the background inside the circle, the
 // outside shaded, the rim; its rows kept in `kept` when given) with each line cut to the circle,
 // or over what the canvas holds, shaded outside the circle afterwards.
-inline void draw_space(const render::Canvas& c, SceneWorld& w, const render::DrawOptions& o, bool map, bool backdrop,
-                       render::BackdropRows* kept = nullptr) {
+template <class T>
+void draw_space(const render::Canvas& c, SceneWorldOf<T>& w, const render::DrawOptions& o, bool map, bool backdrop,
+                render::BackdropRows* kept = nullptr) {
     EdgeStyle style;
     style.line.antialias = o.antialias, style.line.width = o.line_width;
-    const double limit = w.limit();
+    const double limit = static_cast<double>(w.limit()), K = static_cast<double>(w.K);
     const double side = o.disc > 0 ? o.disc : (c.width() < c.height() ? c.width() : c.height());
-    MapView<double> view;
-    InhabitantView<double> eye;
+    MapView<T> view;
+    InhabitantView<T> eye;
     if (map) {
-        view = map_camera(limit, c.width(), c.height(), side, w.time);
+        view = map_camera<T>(limit, c.width(), c.height(), side, w.time);
         const double d = norm(view.camera);
         style.near = d - limit, style.reach = d + limit;
         style.disc = view.lens.focal / std::sqrt(d * d / (limit * limit) - 1);  // (the ball's outline)
     } else {
-        const Body<double>& ship = w.bodies.front();
+        const Body<T>& ship = w.bodies.front();
         eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
         eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
-        style.near = 0, style.reach = w.K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(w.K) : 2 * limit;
+        style.near = 0, style.reach = K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(K) : 2 * limit;
         style.disc = side / 2;
     }
     style.cx = c.width() / 2.0, style.cy = c.height() / 2.0;
     const render::LimitCircle circle{style.cx, style.cy, style.disc};
     if (backdrop) render::draw_backdrop_rows(c, circle, o, c.top(), c.bottom(), kept ? kept->rows(c, circle, o) : nullptr);
     if (map) {
-        world_edges(w, true, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
+        world_edges(w, true, [&](const V4<T>& p, const V4<T>& q, render::Rgb rgb) {
             style.color = rgb;
             draw_edge(c, view, w.K, p, q, style);
         });
     } else {
-        const EyeCamera<double> direct = camera_of(eye);
-        EyeCamera<double> around = direct;
+        const EyeCamera<T> direct = camera_of(eye);
+        EyeCamera<T> around = direct;
         around.around = true;
-        world_edges(w, false, [&](const V4<double>& p, const V4<double>& q, render::Rgb rgb) {
+        world_edges(w, false, [&](const V4<T>& p, const V4<T>& q, render::Rgb rgb) {
             style.color = rgb;
             draw_edge(c, direct, p, q, style);
-            if (w.K > 0) draw_edge(c, around, p, q, style);
+            if (K > 0) draw_edge(c, around, p, q, style);
         });
     }
     if (!backdrop) porthole(c, style.disc, o, style.line);

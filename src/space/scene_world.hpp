@@ -95,9 +95,33 @@ inline Start<double> space_start(const world::Scene& scene) {
     return s;
 }
 
-class SceneWorld : public World<double> {
+// A body, and a world's start, in another scalar (the fixed engine's).
+template <class T>
+Body<T> body_in(const Body<double>& d) {
+    const auto v = [](const V3<double>& x) { return V3<T>{T(x.x), T(x.y), T(x.z)}; };
+    Body<T> b;
+    b.solid = d.solid, b.size = T(d.size), b.at = {T(d.at.r), v(d.at.u)};
+    b.frame = {v(d.frame.forward), v(d.frame.up), v(d.frame.right)};
+    b.travel = v(d.travel), b.speed = T(d.speed), b.spin_axis = v(d.spin_axis), b.spin = T(d.spin);
+    for (int c = 0; c < 3; ++c) b.color[c] = d.color[c];
+    b.ship = d.ship;
+    return b;
+}
+template <class T>
+Start<T> start_in(const Start<double>& d) {
+    Start<T> s;
+    s.K = T(d.K), s.R = T(d.R), s.curvature_rate = d.curvature_rate, s.thrust = d.thrust, s.turn_rate = d.turn_rate;
+    s.max_speed = d.max_speed;
+    for (const Body<double>& b : d.bodies) s.bodies.push_back(body_in<T>(b));
+    return s;
+}
+
+// The world of a scene on the scalar T: double (the reference) or fx::fixed (the device's).
+template <class T>
+class SceneWorldOf : public World<T> {
 public:
-    explicit SceneWorld(const world::Scene& scene) : World<double>(space_start(scene)), scene_(scene) {
+    using World<T>::K;
+    explicit SceneWorldOf(const world::Scene& scene) : World<T>(start_in<T>(space_start(scene))), scene_(scene) {
         if (scene.honeycomb_cells) honeycomb_.set(scene.honeycomb_cells == 3 ? kEightCell : kOrder5Cubic);
         for (const world::SceneSolid& d : scene.solids)
             if (d.shape.empty()) own_.push_back(OwnShape::of(d));
@@ -105,18 +129,18 @@ public:
             own_solids_.push_back({o.name.c_str(), static_cast<int>(o.lengths.size()), o.edge_count, 0, o.directions.get(),
                                    o.edges.get(), o.lengths.data()});
     }
-    SceneWorld(const SceneWorld&) = delete;  // (its solids' names point into its own storage)
-    SceneWorld& operator=(const SceneWorld&) = delete;
+    SceneWorldOf(const SceneWorldOf&) = delete;  // (its solids' names point into its own storage)
+    SceneWorldOf& operator=(const SceneWorldOf&) = delete;
 
     // A body's shape: one of the five, or a scene file's own.
-    const Solid& solid(const Body<double>& b) const {
+    const Solid& solid(const Body<T>& b) const {
         return b.solid < kSolidCount ? kSolids[b.solid] : own_solids_[static_cast<std::size_t>(b.solid - kSolidCount)];
     }
 
     const world::Scene& scene() const { return scene_; }
     // The scene's honeycomb (kind null: none), built for the current K.
     const Honeycomb& honeycomb() {
-        honeycomb_.build(K);
+        honeycomb_.build(static_cast<double>(K));
         return honeycomb_;
     }
     const Honeycomb& honeycomb_as_set() const { return honeycomb_; }  // (its kind and closing K)
@@ -129,8 +153,8 @@ public:
     };
     const std::vector<Gauge>& gauges() const { return gauges_; }
     bool measuring() const { return false; }
-    void place_mark(geo::Polar<double>) {}
-    const world::Game<double>& game() const { return game_; }  // (off)
+    void place_mark(geo::Polar<T>) {}
+    const world::Game<T>& game() const { return game_; }  // (off)
     world::ZoomReading zoom() const { return {}; }  // (no zoom)
 
 private:
@@ -163,7 +187,8 @@ private:
     std::vector<Solid> own_solids_;
     std::vector<Gauge> gauges_;
     Honeycomb honeycomb_;
-    world::Game<double> game_;
+    world::Game<T> game_;
 };
+using SceneWorld = SceneWorldOf<double>;
 
 }  // namespace noneuclid::space

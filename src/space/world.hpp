@@ -5,9 +5,14 @@
 //  1. the ship: thrust adds thrust * dt along its forward to its velocity (as vectors at the
 //     ship, the 2D rule), left and right turn its frame about its up (yaw), pitch up and down
 //     about its right (up: forward toward up), roll left and right about its forward;
-//  2. every body flies speed * dt along its travel (space::fly: the travel and the frame carried,
-//     so a spinning body still coasts along one geodesic);
-//  3. its spin turns its frame about its axis (in the frame's own coordinates);
+//  2. every body flies speed * dt along its travel (the travel and the frame carried, so a
+//     spinning body still coasts along one geodesic), and
+//  3. its spin turns its frame about its axis (in the frame's own coordinates): both from the
+//     start of its coast, the stretch since its velocity, K or the limit sphere last changed it:
+//     the walk of speed * (time on the coast) from where the coast began, its frame turned by
+//     spin * (time) about the axis and then carried (the two commute: the spin is in the body's
+//     own coordinates, the carrying in the world's). So a frame's roundings do not add up over
+//     the frames, which in fixed point (Q16.16) would move a body pixels in seconds;
 //  4. the limit sphere: a centre past R reappears at (2R - r, -u), its frame unchanged in the
 //     carried coordinates. At K > 0 with R = pi / sqrt K that is exactly the geodesic going on
 //     through the antipode (tested against the embedding).
@@ -20,6 +25,7 @@
 // reads a clock or a random number: the same actions give the same world, bit for bit.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -40,6 +46,15 @@ struct Body {
     T spin{};                            // radians a second, right-handed about the axis
     uint8_t color[3] = {220, 225, 235};
     bool ship = false;                   // the body the ship's actions steer (the first one)
+
+    // Its coast (step 2): where the geodesic it is on began, and for how long it has been on it.
+    struct Coast {
+        Point<T> at;
+        V3<T> travel{T(1), T(0), T(0)};
+        Frame<T> frame;
+        double time = 0;
+        bool on = false;
+    } coast;
 };
 
 // A world's start: its bodies and its constants.
@@ -89,7 +104,7 @@ public:
     void release(world::Action a) { held_[static_cast<int>(a)] = false; }
 
     void reset() {
-        K = start_.K, R = start_.R, time = 0, frame = 0, bodies = start_.bodies;
+        K = start_.K, R = start_.R, time = 0, frame = 0, bodies = start_.bodies, last_K_ = K;
         for (bool& h : held_) h = false;
     }
 
@@ -100,19 +115,22 @@ public:
             const double k = static_cast<double>(K) + dk * start_.curvature_rate * dt;
             K = T(k < -1 ? -1 : (k > 1 ? 1 : k));
         }
+        const bool turned_K = K != last_K_;
+        last_K_ = K;
         for (Body<T>& b : bodies) {
-            if (b.ship) steer(b, dt);
-            if (b.speed != T(0)) fly(K, b.at, b.travel, b.frame, b.speed * T(dt));
-            if (b.spin != T(0)) spin(b, T(dt));
-            settle(b);
+            if ((b.ship && steer(b, dt)) || turned_K) b.coast.on = false;
+            if (b.speed != T(0) || b.spin != T(0)) move(b, dt);
+            if (settle(b)) b.coast.on = false;
         }
         time += dt, ++frame;
     }
 
 private:
-    void steer(Body<T>& b, double dt) {
+    // Whether the ship's velocity or frame changed.
+    bool steer(Body<T>& b, double dt) {
         using world::Action;
-        if (held(Action::thrust)) {  // velocity += thrust dt along forward, at most max_speed
+        const bool thrust = held(Action::thrust);
+        if (thrust) {  // velocity += thrust dt along forward, at most max_speed
             const V3<T> v = b.speed * b.travel + T(start_.thrust * dt) * b.frame.forward;
             const T speed = norm(v);
             b.travel = unit(v, b.frame.forward);
@@ -130,26 +148,48 @@ private:
         if (yaw != 0) f.forward = turned(f.forward, f.up, T(yaw)), f.right = turned(f.right, f.up, T(yaw));
         if (pitch != 0) f.forward = turned(f.forward, f.right, T(pitch)), f.up = turned(f.up, f.right, T(pitch));
         if (roll != 0) f.up = turned(f.up, f.forward, T(roll)), f.right = turned(f.right, f.forward, T(roll));
-        if (yaw != 0 || pitch != 0 || roll != 0) f = orthonormal(f);
+        const bool turn = yaw != 0 || pitch != 0 || roll != 0;
+        if (turn) f = orthonormal(f);
+        return thrust || turn;
     }
     bool shifted() const { return held(world::Action::fire); }
-    void spin(Body<T>& b, T dt) {
-        const V3<T> axis = unit(b.spin_axis.x * b.frame.forward + b.spin_axis.z * b.frame.up - b.spin_axis.y * b.frame.right);
-        const T angle = b.spin * dt;
-        b.frame = orthonormal(Frame<T>{turned(b.frame.forward, axis, angle), turned(b.frame.up, axis, angle),
-                                       turned(b.frame.right, axis, angle)});
+    // The frame f turned by `angle` about the body's spin axis (in f's own coordinates).
+    static Frame<T> spun(const Body<T>& b, const Frame<T>& f, T angle) {
+        const V3<T> axis = unit(b.spin_axis.x * f.forward + b.spin_axis.z * f.up - b.spin_axis.y * f.right);
+        return orthonormal(Frame<T>{turned(f.forward, axis, angle), turned(f.up, axis, angle), turned(f.right, axis, angle)});
+    }
+    // Steps 2 and 3, from the coast's start (a new coast where the last one ended).
+    void move(Body<T>& b, double dt) {
+        typename Body<T>::Coast& c = b.coast;
+        if (!c.on) c = {b.at, b.travel, b.frame, 0, true};
+        c.time += dt;
+        // (The turn taken modulo a full one: a body spinning in place keeps one coast for months.)
+        const double turn = std::fmod(static_cast<double>(b.spin) * c.time, 2 * 3.14159265358979323846);
+        const Frame<T> f = b.spin != T(0) ? spun(b, c.frame, T(turn)) : c.frame;
+        if (b.speed == T(0)) {
+            b.frame = f;
+            return;
+        }
+        const Walk<T> w = walk(K, c.at, c.travel, T(static_cast<double>(b.speed) * c.time));
+        b.at = w.end;
+        b.travel = unit(w.heading, c.travel);
+        b.frame = orthonormal(Frame<T>{carry(w, f.forward), carry(w, f.up), carry(w, f.right)});
     }
     // (Repeated, for a body that K's turn left more than once round: at K > 0 the limit can
-    // shrink to pi / sqrt K under a body far out; each pass brings it 2R nearer.)
-    void settle(Body<T>& b) const {
+    // shrink to pi / sqrt K under a body far out; each pass brings it 2R nearer.) Whether it moved.
+    bool settle(Body<T>& b) const {
         const T R = limit();
+        bool moved = false;
         while (b.at.r > R) {
             b.at = {T(2) * R - b.at.r, T(-1) * b.at.u};
             if (b.at.r < T(0)) b.at = {T(-1) * b.at.r, T(-1) * b.at.u};
+            moved = true;
         }
+        return moved;
     }
 
     Start<T> start_;
+    T last_K_{};
     bool held_[world::kActionCount] = {};
 };
 
