@@ -32,7 +32,7 @@ const base = `http://127.0.0.1:${await port}/index.html`;
 const browser = new Browser(opt.chromium, path.join(work, 'profile'));
 const rows = [];
 try {
-  for (const scene of ['kiosk', 'stress']) {
+  for (const scene of ['kiosk', 'stress', 'space']) {
     const page = await browser.newPage();
     await page.open(`${base}?scene=${scene}&size=800x480`);  // the page would fit its size to the window
     if (!await page.evaluate('window.noneuclid.ready')) throw new Error(`the page did not start on ${scene}`);
