@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "probe_args.hpp"
 #include "render/blit.hpp"
 #include "uneven/draw.hpp"
 
@@ -29,10 +30,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     int w = 0, h = 0;
-    if (std::sscanf(argv[3], "%dx%d", &w, &h) != 2 || w < 16 || h < 16) return 2;
     render::PixelFormat f = render::PixelFormat::rgb565();
-    if (std::strcmp(argv[4], "xrgb8888") == 0) f = render::PixelFormat::xrgb8888();
-    if (std::strcmp(argv[4], "rgb888") == 0) f = render::PixelFormat::rgb888();
+    if (!probe::canvas_words(argv[3], argv[4], w, h, f)) return 2;
     const long n = std::atol(argv[5]);
     uneven::World wd(scene);
     if (argc > 6 && std::strcmp(argv[6], "curvature") == 0) wd.press(world::Action::curvature_down);
