@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "render/backdrop.hpp"
 #include "render/raster.hpp"
 #include "space/edges.hpp"
 
@@ -16,18 +17,18 @@ struct EdgeStyle {
     double near = 0;                        // the depth drawn brightest
     double reach = 3.14159265358979323846;  // the depth drawn dimmest
     render::LineStyle line{};
-    double cx = 0, cy = 0, disc = 0;  // the circle the view shows through, px (disc 0: none)
+    render::LimitCircle circle{};  // the circle the view shows through, px (radius 0: none)
 };
 
-// The part [t0, t1] of the segment a-b inside the circle (cx, cy, r); false if none.
-inline bool inside_circle(const Seen& a, const Seen& b, double cx, double cy, double r, double& t0, double& t1) {
-    const double dx = b.x - a.x, dy = b.y - a.y, ex = a.x - cx, ey = a.y - cy;
-    const double A = dx * dx + dy * dy, B = ex * dx + ey * dy, C = ex * ex + ey * ey - r * r;
+// The part [t0, t1] of the segment a-b inside the circle o; false if none.
+inline bool inside_circle(const Seen& a, const Seen& b, const render::LimitCircle& o, double& t0, double& t1) {
+    const double dx = b.x - a.x, dy = b.y - a.y, ex = a.x - o.cx, ey = a.y - o.cy;
+    const double A = dx * dx + dy * dy, B = ex * dx + ey * dy, C = ex * ex + ey * ey - o.r * o.r;
     t0 = 0, t1 = 1;
     if (A <= 0) return C <= 0;
-    const double disc = B * B - A * C;  // (|a + t (b - a) - c|^2 = r^2: A t^2 + 2 B t + C = 0)
-    if (disc <= 0) return false;
-    const double root = std::sqrt(disc);
+    const double d = B * B - A * C;  // (|a + t (b - a) - c|^2 = r^2: A t^2 + 2 B t + C = 0)
+    if (d <= 0) return false;
+    const double root = std::sqrt(d);
     t0 = std::max(0.0, (-B - root) / A), t1 = std::min(1.0, (-B + root) / A);
     return t0 < t1;
 }
@@ -44,7 +45,7 @@ template <class Pieces>
 void draw_pieces(const render::Canvas& c, const EdgeStyle& s, Pieces&& pieces) {
     pieces([&](const Seen& a, const Seen& b) {
         double t0 = 0, t1 = 1;
-        if (s.disc > 0 && !inside_circle(a, b, s.cx, s.cy, s.disc, t0, t1)) return;
+        if (s.circle.r > 0 && !inside_circle(a, b, s.circle, t0, t1)) return;
         const auto at = [&](double t) { return geo::to_sub(a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)); };
         render::draw_line(c, at(t0), at(t1), dimmed(s.color, (a.depth + b.depth) / 2, s.near, s.reach), s.line, true,
                           render::held_rows(c));

@@ -146,16 +146,16 @@ void draw_space(const render::Canvas& c, SceneWorldOf<T>& w, const render::DrawO
         view = map_camera<T>(limit, c.width(), c.height(), side, w.time);
         const double d = norm(view.camera);
         style.near = d - limit, style.reach = d + limit;
-        style.disc = view.lens.focal / std::sqrt(d * d / (limit * limit) - 1);  // (the ball's outline)
+        style.circle.r = view.lens.focal / std::sqrt(d * d / (limit * limit) - 1);  // (the ball's outline)
     } else {
         const Body<T>& ship = w.bodies.front();
         eye.K = w.K, eye.eye = ship.at, eye.frame = ship.frame;
         eye.lens = {c.width() / 2.0, c.height() / 2.0, side / 2.0};  // (90 degrees across the disc)
         style.near = 0, style.reach = K > 0 ? 2 * 3.14159265358979323846 / std::sqrt(K) : 2 * limit;
-        style.disc = side / 2;
+        style.circle.r = side / 2;
     }
-    style.cx = c.width() / 2.0, style.cy = c.height() / 2.0;
-    const render::LimitCircle circle{style.cx, style.cy, style.disc};
+    style.circle.cx = c.width() / 2.0, style.circle.cy = c.height() / 2.0;
+    const render::LimitCircle& circle = style.circle;
     if (backdrop) render::draw_backdrop_rows(c, circle, o, c.top(), c.bottom(), kept ? kept->rows(c, circle, o) : nullptr);
     if (map) {
         world_edges(w, true, [&](const V4<T>& p, const V4<T>& q, render::Rgb rgb) {
@@ -172,7 +172,7 @@ void draw_space(const render::Canvas& c, SceneWorldOf<T>& w, const render::DrawO
             if (K > 0) draw_edge(c, around, p, q, style);
         });
     }
-    if (!backdrop) porthole(c, style.disc, o, style.line);
+    if (!backdrop) porthole(c, circle.r, o, style.line);
 }
 
 }  // namespace noneuclid::space
